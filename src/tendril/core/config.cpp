@@ -1,0 +1,269 @@
+#include "tendril/core/config.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril {
+
+struct Config::Shared {
+  std::string source;
+  std::set<std::string> used;  // key paths that a read touched
+};
+
+struct Config::NodeHandle {
+  YAML::Node node;
+};
+
+namespace {
+
+std::string type_name(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null: return "null";
+    case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
+    case YAML::NodeType::Sequence: return "a sequence";
+    case YAML::NodeType::Map: return "a mapping";
+    default: return "nothing";
+  }
+}
+
+[[noreturn]] void wrong_type(const std::string& where, const char* expected, const YAML::Node& node) {
+  throw Error(std::string("expected ") + expected + ", got " + type_name(node), where);
+}
+
+template <typename T>
+T convert_scalar(const YAML::Node& node, const std::string& where, const char* expected) {
+  if (!node.IsScalar()) wrong_type(where, expected, node);
+  try {
+    return node.as<T>();
+  } catch (const YAML::Exception&) {
+    wrong_type(where, expected, node);
+  }
+}
+
+template <typename T>
+T convert(const YAML::Node& node, const std::string& where);
+
+template <>
+double convert<double>(const YAML::Node& node, const std::string& where) {
+  const double value = convert_scalar<double>(node, where, "a number");
+  if (!std::isfinite(value)) throw Error("expected a finite number, got " + type_name(node), where);
+  return value;
+}
+template <>
+int64_t convert<int64_t>(const YAML::Node& node, const std::string& where) {
+  if (node.IsScalar()) {
+    // Accept integral values written in floating-point form (1e6, 2000000.0).
+    try {
+      return node.as<int64_t>();
+    } catch (const YAML::Exception&) {
+      double value = 0;
+      if (YAML::convert<double>::decode(node, value) && std::isfinite(value) &&
+          value == std::floor(value) && std::abs(value) < 9.0e18) {
+        return static_cast<int64_t>(value);
+      }
+    }
+  }
+  wrong_type(where, "an integer", node);
+}
+template <>
+int convert<int>(const YAML::Node& node, const std::string& where) {
+  const int64_t value = convert<int64_t>(node, where);
+  if (value < INT32_MIN || value > INT32_MAX) wrong_type(where, "a 32-bit integer", node);
+  return static_cast<int>(value);
+}
+template <>
+uint64_t convert<uint64_t>(const YAML::Node& node, const std::string& where) {
+  const int64_t value = convert<int64_t>(node, where);
+  if (value < 0) wrong_type(where, "a non-negative integer", node);
+  return static_cast<uint64_t>(value);
+}
+template <>
+bool convert<bool>(const YAML::Node& node, const std::string& where) {
+  return convert_scalar<bool>(node, where, "true or false");
+}
+template <>
+std::string convert<std::string>(const YAML::Node& node, const std::string& where) {
+  return convert_scalar<std::string>(node, where, "a string");
+}
+
+template <typename T>
+std::vector<T> convert_sequence(const YAML::Node& node, const std::string& where,
+                                const char* expected) {
+  if (!node.IsSequence()) wrong_type(where, expected, node);
+  std::vector<T> values;
+  values.reserve(node.size());
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    values.push_back(convert<T>(node[i], where + "[" + std::to_string(i) + "]"));
+  }
+  return values;
+}
+template <>
+std::vector<double> convert<std::vector<double>>(const YAML::Node& node, const std::string& where) {
+  return convert_sequence<double>(node, where, "a sequence of numbers");
+}
+template <>
+std::vector<int64_t> convert<std::vector<int64_t>>(const YAML::Node& node,
+                                                   const std::string& where) {
+  return convert_sequence<int64_t>(node, where, "a sequence of integers");
+}
+template <>
+std::vector<std::string> convert<std::vector<std::string>>(const YAML::Node& node,
+                                                           const std::string& where) {
+  return convert_sequence<std::string>(node, where, "a sequence of strings");
+}
+
+std::string join(const std::string& path, std::string_view key) {
+  return path.empty() ? std::string(key) : path + "." + std::string(key);
+}
+
+void find_unused(const YAML::Node& node, const std::string& path,
+                 const std::set<std::string>& used, const std::string& source) {
+  if (!node.IsMap()) return;
+  for (const auto& entry : node) {
+    const std::string key_path = join(path, entry.first.as<std::string>());
+    if (!used.count(key_path)) throw Error("unknown key '" + key_path + "'", source);
+    find_unused(entry.second, key_path, used, source);
+  }
+}
+
+YAML::Node parse_yaml(std::string_view text, const std::string& source) {
+  try {
+    YAML::Node root = YAML::Load(std::string(text));
+    if (root.IsNull()) return YAML::Node(YAML::NodeType::Map);
+    if (!root.IsMap()) throw Error("the document must be a mapping, got " + type_name(root), source);
+    return root;
+  } catch (const YAML::ParserException& e) {
+    throw Error("malformed YAML at line " + std::to_string(e.mark.line + 1) + ", column " +
+                    std::to_string(e.mark.column + 1) + ": " + e.msg,
+                source);
+  }
+}
+
+}  // namespace
+
+Config::Config()
+    : Config(std::make_shared<Shared>(Shared{"<empty>", {}}),
+             std::make_shared<NodeHandle>(NodeHandle{YAML::Node(YAML::NodeType::Map)}), "") {}
+
+Config::Config(std::shared_ptr<Shared> shared, std::shared_ptr<NodeHandle> node, std::string path)
+    : shared_(std::move(shared)), node_(std::move(node)), path_(std::move(path)) {}
+
+Config Config::load_file(const std::filesystem::path& file) {
+  std::ifstream stream(file);
+  if (!stream) throw Error("cannot open config file", file.string());
+  std::stringstream text;
+  text << stream.rdbuf();
+  return parse(text.str(), file.string());
+}
+
+Config Config::parse(std::string_view yaml_text, std::string source) {
+  YAML::Node root = parse_yaml(yaml_text, source);
+  return Config(std::make_shared<Shared>(Shared{std::move(source), {}}),
+                std::make_shared<NodeHandle>(NodeHandle{root}), "");
+}
+
+std::string Config::key_path(std::string_view key) const { return join(path_, key); }
+
+const std::string& Config::source() const { return shared_->source; }
+
+bool Config::has(std::string_view key) const {
+  return node_->node.IsMap() && static_cast<bool>(node_->node[std::string(key)]);
+}
+
+std::vector<std::string> Config::keys() const {
+  std::vector<std::string> names;
+  if (!node_->node.IsMap()) return names;
+  for (const auto& entry : node_->node) names.push_back(entry.first.as<std::string>());
+  return names;
+}
+
+template <typename T>
+T Config::get(std::string_view key) const {
+  const std::string where = key_path(key);
+  if (!has(key)) throw Error("missing required key '" + where + "'", shared_->source);
+  shared_->used.insert(where);
+  return convert<T>(node_->node[std::string(key)], shared_->source + ": " + where);
+}
+
+template double Config::get<double>(std::string_view) const;
+template int64_t Config::get<int64_t>(std::string_view) const;
+template int Config::get<int>(std::string_view) const;
+template uint64_t Config::get<uint64_t>(std::string_view) const;
+template bool Config::get<bool>(std::string_view) const;
+template std::string Config::get<std::string>(std::string_view) const;
+template std::vector<double> Config::get<std::vector<double>>(std::string_view) const;
+template std::vector<int64_t> Config::get<std::vector<int64_t>>(std::string_view) const;
+template std::vector<std::string> Config::get<std::vector<std::string>>(std::string_view) const;
+
+Config Config::child(std::string_view key) const {
+  const std::string where = key_path(key);
+  shared_->used.insert(where);
+  if (!has(key)) {
+    return Config(shared_, std::make_shared<NodeHandle>(NodeHandle{YAML::Node(YAML::NodeType::Map)}),
+                  where);
+  }
+  YAML::Node node = node_->node[std::string(key)];
+  if (!node.IsMap()) wrong_type(shared_->source + ": " + where, "a mapping", node);
+  return Config(shared_, std::make_shared<NodeHandle>(NodeHandle{node}), where);
+}
+
+std::vector<Config> Config::children(std::string_view key) const {
+  const std::string where = key_path(key);
+  std::vector<Config> result;
+  if (!has(key)) return result;
+  shared_->used.insert(where);
+  YAML::Node node = node_->node[std::string(key)];
+  if (!node.IsSequence()) wrong_type(shared_->source + ": " + where, "a sequence of mappings", node);
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    const std::string item_path = where + "[" + std::to_string(i) + "]";
+    if (!node[i].IsMap()) wrong_type(shared_->source + ": " + item_path, "a mapping", node[i]);
+    result.push_back(Config(shared_, std::make_shared<NodeHandle>(NodeHandle{node[i]}), item_path));
+  }
+  return result;
+}
+
+void Config::set(std::string_view dotted_path, std::string_view value) {
+  const std::string where = "--set " + std::string(dotted_path);
+  if (dotted_path.empty()) throw Error("empty key", where);
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(std::string(value));
+  } catch (const YAML::ParserException& e) {
+    throw Error("malformed value '" + std::string(value) + "': " + e.msg, where);
+  }
+  YAML::Node node = node_->node;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = dotted_path.find('.', start);
+    const std::string part(dotted_path.substr(start, dot - start));
+    if (part.empty()) throw Error("empty component in key path", where);
+    if (dot == std::string_view::npos) {
+      node[part] = parsed;
+      return;
+    }
+    YAML::Node next = node[part];
+    if (!next) {
+      node[part] = YAML::Node(YAML::NodeType::Map);
+    } else if (!next.IsMap()) {
+      throw Error("'" + part + "' is not a mapping", where);
+    }
+    node.reset(node[part]);
+    start = dot + 1;
+  }
+}
+
+void Config::reject_unknown() const { find_unused(node_->node, path_, shared_->used, shared_->source); }
+
+std::string Config::dump() const {
+  YAML::Emitter out;
+  out << node_->node;
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace tendril

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tendril {
+
+// A view of one mapping inside an experiment's YAML configuration.
+//
+// Reads are typed and checked: a missing required key, or a value of the wrong type, raises
+// Error naming the full key path (e.g. "env.params.n_elements") and the expected type. Every
+// read marks its key as used; `reject_unknown()` then raises on the first key that nothing
+// read, so a misspelt option is an error instead of being silently ignored.
+class Config {
+ public:
+  // An empty mapping.
+  Config();
+
+  static Config load_file(const std::filesystem::path& file);
+  static Config parse(std::string_view yaml_text, std::string source = "<text>");
+
+  bool has(std::string_view key) const;
+  std::vector<std::string> keys() const;
+
+  // Required values.
+  template <typename T>
+  T get(std::string_view key) const;
+  // Optional values: `fallback` when the key is absent (a present key of the wrong type raises).
+  template <typename T>
+  T get_or(std::string_view key, const T& fallback) const {
+    return has(key) ? get<T>(key) : fallback;
+  }
+
+  // A nested mapping; an absent key gives an empty mapping at that path.
+  Config child(std::string_view key) const;
+  // A sequence of mappings.
+  std::vector<Config> children(std::string_view key) const;
+
+  // Sets `dotted.key.path` to `value` parsed as a YAML scalar or flow sequence (the CLI's
+  // `--set key=value`). Creates intermediate mappings as needed.
+  void set(std::string_view dotted_path, std::string_view value);
+
+  // Raises Error naming the first key below this view that no read has touched.
+  void reject_unknown() const;
+
+  // The key path of this view ("" for the root) and the file it came from.
+  const std::string& path() const { return path_; }
+  const std::string& source() const;
+
+  // The whole document under this view as YAML text.
+  std::string dump() const;
+
+ private:
+  struct Shared;
+  struct NodeHandle;
+  Config(std::shared_ptr<Shared> shared, std::shared_ptr<NodeHandle> node, std::string path);
+  std::string key_path(std::string_view key) const;
+
+  std::shared_ptr<Shared> shared_;
+  std::shared_ptr<NodeHandle> node_;
+  std::string path_;
+};
+
+extern template double Config::get<double>(std::string_view) const;
+extern template int64_t Config::get<int64_t>(std::string_view) const;
+extern template int Config::get<int>(std::string_view) const;
+extern template uint64_t Config::get<uint64_t>(std::string_view) const;
+extern template bool Config::get<bool>(std::string_view) const;
+extern template std::string Config::get<std::string>(std::string_view) const;
+extern template std::vector<double> Config::get<std::vector<double>>(std::string_view) const;
+extern template std::vector<int64_t> Config::get<std::vector<int64_t>>(std::string_view) const;
+extern template std::vector<std::string> Config::get<std::vector<std::string>>(
+    std::string_view) const;
+
+}  // namespace tendril

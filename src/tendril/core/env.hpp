@@ -1,0 +1,51 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "tendril/core/space.hpp"
+
+namespace tendril {
+
+// Named scalars reported by a step. Names are shared across environments where the meaning is
+// the same: "distance", "is_success", "cost", "nan".
+class Info {
+ public:
+  void set(std::string_view name, double value);
+  std::optional<double> get(std::string_view name) const;
+  bool has(std::string_view name) const { return get(name).has_value(); }
+  const std::vector<std::pair<std::string, double>>& entries() const { return entries_; }
+  void clear() { entries_.clear(); }
+
+ private:
+  std::vector<std::pair<std::string, double>> entries_;
+};
+
+struct Step {
+  Observation observation;
+  double reward = 0.0;
+  bool terminated = false;  // the task ended: goal, failure, non-finite state
+  bool truncated = false;   // a time limit cut the episode; bootstrap from `observation`
+  Info info;
+};
+
+// Everything a controller acts on, with Gymnasium's semantics (DESIGN.md, "The one interface").
+// `step` raises Error for an action of the wrong size or with non-finite values; clipping to
+// the bounds is the action wrapper's job, not the environment's.
+class Env {
+ public:
+  virtual ~Env() = default;
+  virtual const Space& observation_space() const = 0;
+  virtual const Space& action_space() const = 0;
+  virtual Observation reset(std::optional<uint64_t> seed = std::nullopt) = 0;
+  virtual Step step(const Action& action) = 0;
+};
+
+// Raises Error naming `who` unless `action` has the action space's size and finite values.
+void check_action(const Space& action_space, const Action& action, std::string_view who);
+
+}  // namespace tendril

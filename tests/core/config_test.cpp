@@ -1,0 +1,104 @@
+#include "tendril/core/config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril {
+namespace {
+
+std::string message_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Config, ReadsTypedValuesAndNestedMappings) {
+  const Config config = Config::parse(R"(
+seed: 3
+env:
+  id: Elastica/Tracking3D-v0
+  params: {n_elements: 20, dt: 2.0e-4, gravity: [0, 0, -9.81]}
+use_contact: true
+steps: 1e6
+)");
+  EXPECT_EQ(config.get<int>("seed"), 3);
+  EXPECT_EQ(config.child("env").get<std::string>("id"), "Elastica/Tracking3D-v0");
+  const Config params = config.child("env").child("params");
+  EXPECT_EQ(params.get<int64_t>("n_elements"), 20);
+  EXPECT_DOUBLE_EQ(params.get<double>("dt"), 2.0e-4);
+  EXPECT_EQ(params.get<std::vector<double>>("gravity"), (std::vector<double>{0, 0, -9.81}));
+  EXPECT_TRUE(config.get<bool>("use_contact"));
+  EXPECT_EQ(config.get<int64_t>("steps"), 1000000);
+  EXPECT_EQ(config.get_or<double>("missing", 1.5), 1.5);
+  EXPECT_EQ(params.path(), "env.params");
+  EXPECT_NO_THROW(config.reject_unknown());
+}
+
+TEST(Config, UnknownKeyIsNamedWithItsPath) {
+  const Config config = Config::parse("env:\n  id: x\n  n_elemnts: 20\n", "exp.yaml");
+  EXPECT_EQ(config.child("env").get<std::string>("id"), "x");
+  EXPECT_EQ(message_of([&] { config.reject_unknown(); }), "exp.yaml: unknown key 'env.n_elemnts'");
+}
+
+TEST(Config, WrongTypeNamesKeyAndExpectedType) {
+  const Config config = Config::parse("algo:\n  batch_size: many\n  lr: [1]\n", "exp.yaml");
+  EXPECT_EQ(message_of([&] { config.child("algo").get<int>("batch_size"); }),
+            "exp.yaml: algo.batch_size: expected an integer, got 'many'");
+  EXPECT_EQ(message_of([&] { config.child("algo").get<double>("lr"); }),
+            "exp.yaml: algo.lr: expected a number, got a sequence");
+  EXPECT_EQ(message_of([&] { config.child("algo").get<double>("gamma"); }),
+            "exp.yaml: missing required key 'algo.gamma'");
+  EXPECT_EQ(message_of([&] { config.get<double>("algo"); }),
+            "exp.yaml: algo: expected a number, got a mapping");
+}
+
+TEST(Config, MalformedYamlReportsLine) {
+  const std::string message = message_of([] { Config::parse("a: 1\nb: [1, 2\n", "bad.yaml"); });
+  EXPECT_NE(message.find("bad.yaml: malformed YAML at line"), std::string::npos) << message;
+  EXPECT_EQ(message_of([] { Config::parse("- 1\n- 2\n", "list.yaml"); }),
+            "list.yaml: the document must be a mapping, got a sequence");
+}
+
+TEST(Config, SetOverridesAndCreatesKeys) {
+  Config config = Config::parse("algo:\n  batch_size: 64\n");
+  config.set("algo.batch_size", "16000");
+  config.set("env.params.n_elements", "50");
+  config.set("algo.net", "[64, 64]");
+  EXPECT_EQ(config.child("algo").get<int>("batch_size"), 16000);
+  EXPECT_EQ(config.child("env").child("params").get<int>("n_elements"), 50);
+  EXPECT_EQ(config.child("algo").get<std::vector<int64_t>>("net"), (std::vector<int64_t>{64, 64}));
+  EXPECT_THROW(config.set("algo.batch_size.x", "1"), Error);
+}
+
+TEST(Config, DumpRoundTrips) {
+  const Config config = Config::parse("a: 1\nb:\n  c: [1.5, 2]\n  d: text\n");
+  const Config again = Config::parse(config.dump());
+  EXPECT_EQ(again.get<int>("a"), 1);
+  EXPECT_EQ(again.child("b").get<std::vector<double>>("c"), (std::vector<double>{1.5, 2}));
+  EXPECT_EQ(again.child("b").get<std::string>("d"), "text");
+}
+
+TEST(Config, LoadFileReportsMissingFile) {
+  EXPECT_EQ(message_of([] { Config::load_file("/nonexistent/exp.yaml"); }),
+            "/nonexistent/exp.yaml: cannot open config file");
+  const auto file = std::filesystem::temp_directory_path() / "tendril_config_test.yaml";
+  std::ofstream(file) << "n: 7\n";
+  EXPECT_EQ(Config::load_file(file).get<int>("n"), 7);
+  std::filesystem::remove(file);
+}
+
+TEST(Config, NonFiniteNumbersAreRejected) {
+  const Config config = Config::parse("x: .nan\ny: .inf\n");
+  EXPECT_THROW(config.get<double>("x"), Error);
+  EXPECT_THROW(config.get<double>("y"), Error);
+}
+
+}  // namespace
+}  // namespace tendril
