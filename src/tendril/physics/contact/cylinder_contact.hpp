@@ -1,0 +1,57 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "tendril/physics/contact/soft_wall.hpp"
+#include "tendril/physics/rod/rod_part.hpp"
+
+namespace tendril::physics {
+
+// A rigid, fixed, finite cylinder: the points within `radius` of the axis segment from
+// `start` to `start + length · axis` (its ends are rounded, as a capsule).
+struct Cylinder {
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();  // m, lab frame
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitY();  // unit
+  double length = 1.0;                              // m
+  double radius = 0.1;                              // m
+
+  Eigen::Vector3d end() const { return start + length * axis; }
+};
+
+// Soft-wall contact between the rod's elements and a set of fixed cylinders. For each element
+// the contact point is the pair of closest points between the element's centreline segment and
+// the cylinder's axis segment; the interpenetration is ε = r_element + r_cylinder − distance and
+// the normal points from the axis to the element.
+class CylinderContact final : public RodPart {
+ public:
+  CylinderContact(std::vector<Cylinder> cylinders, SoftWall wall = {});
+  uint32_t stages() const override { return kContact; }
+  void add_contact_loads(const RodModel& model, RodState& state) override;
+
+  const std::vector<Cylinder>& cylinders() const { return cylinders_; }
+
+ private:
+  struct Bounds {
+    Eigen::Vector3d centre;
+    double reach;  // half the axis length plus the radius
+  };
+  std::vector<Cylinder> cylinders_;
+  std::vector<Bounds> bounds_;
+  SoftWall wall_;
+};
+
+// Soft-wall contact with a fixed plane through `point` with outward unit `normal`: an element
+// whose centre lies closer to the plane than its radius is pushed out along the normal.
+class PlaneContact final : public RodPart {
+ public:
+  PlaneContact(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, SoftWall wall = {});
+  uint32_t stages() const override { return kContact; }
+  void add_contact_loads(const RodModel& model, RodState& state) override;
+
+ private:
+  Eigen::Vector3d point_, normal_;
+  SoftWall wall_;
+};
+
+}  // namespace tendril::physics

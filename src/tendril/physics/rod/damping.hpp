@@ -1,0 +1,39 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "tendril/physics/rod/rod_part.hpp"
+
+namespace tendril::physics {
+
+// The internal damping of the paper-era Elastica engine used by the soft-arm RL cases: per
+// element a force ν v̄ l (v̄ the mean velocity of its two nodes, l its current length) shared
+// half-and-half by its nodes, and a torque ν ω l, both opposing motion. ν in kg/(m·s); the arm
+// uses ν = 30 (Table 6 of the Elastica RL paper). Explicit, so bounded by the time step.
+class InternalDamping final : public RodPart {
+ public:
+  explicit InternalDamping(double coefficient);
+  uint32_t stages() const override { return kLoads; }
+  void add_loads(const RodModel& model, RodState& state) override;
+
+ private:
+  double coefficient_;
+};
+
+// Rayleigh damping f = −γ_t v and c = −γ_r ω per unit length, integrated exactly over a step:
+// each rate decays as exp(−rate · dt), so it is unconditionally stable. γ_t in kg/(m·s),
+// γ_r in kg·m/s; rotational rates use the rest dilatation.
+class AnalyticalLinearDamping final : public RodPart {
+ public:
+  AnalyticalLinearDamping(double translational, double rotational);
+  uint32_t stages() const override { return kDampRates; }
+  void attach(const RodModel& model, const RodState& state) override;
+  void damp_rates(const RodModel& model, RodState& state) override;
+
+ private:
+  double translational_, rotational_;
+  Eigen::VectorXd velocity_factors_;     // per node
+  Eigen::Matrix3Xd angular_factors_;     // per element and material axis
+};
+
+}  // namespace tendril::physics

@@ -1,0 +1,151 @@
+#include "tendril/physics/rod/rod.hpp"
+
+#include <cmath>
+
+#include "tendril/core/error.hpp"
+#include "tendril/physics/rod/internal_loads.hpp"
+#include "tendril/physics/rod/rotation.hpp"
+
+namespace tendril::physics {
+
+Rod::Rod(const RodSpec& spec) : model_(RodModel::build(spec)) {
+  state_.resize(model_);
+  const Eigen::Vector3d d3 = spec.direction;
+  const Eigen::Vector3d d1 = spec.normal;
+  const Eigen::Vector3d d2 = d3.cross(d1);
+  Eigen::Matrix3d frame;
+  frame.row(0) = d1;
+  frame.row(1) = d2;
+  frame.row(2) = d3;
+  double arc_length = 0.0;
+  state_.positions.col(0) = spec.base_position;
+  for (int i = 0; i < model_.n_elements; ++i) {
+    arc_length += model_.rest_lengths[i];
+    state_.positions.col(i + 1) = spec.base_position + arc_length * d3;
+    state_.directors[i] = frame;
+  }
+  state_changed();
+}
+
+void Rod::attach(std::unique_ptr<RodPart> part) {
+  require(part != nullptr, "cannot attach a null part", "Rod::attach");
+  part->attach(model_, state_);
+  RodPart* raw = part.get();
+  const uint32_t stages = raw->stages();
+  if (stages & kConstrainValues) constrain_values_.push_back(raw);
+  if (stages & kLoads) loads_.push_back(raw);
+  if (stages & kContact) contact_.push_back(raw);
+  if (stages & kConstrainRates) constrain_rates_.push_back(raw);
+  if (stages & kDampRates) damp_rates_.push_back(raw);
+  parts_.push_back(std::move(part));
+}
+
+void Rod::state_changed() {
+  compute_strains(model_, state_);
+  finite_ = state_is_finite();
+}
+
+bool Rod::state_is_finite() const {
+  // A sum is non-finite iff some term is (or the terms overflow, which is a blow-up too).
+  double sum = state_.positions.sum() + state_.velocities.sum() + state_.angular_velocities.sum();
+  for (const auto& q : state_.directors) sum += q.sum();
+  return std::isfinite(sum);
+}
+
+bool Rod::advance(int steps) {
+  if (!finite_) return false;
+  for (int s = 0; s < steps; ++s) step();
+  // Read-outs (strains, energies, radii) describe the configuration at the end of the call.
+  compute_strains(model_, state_);
+  finite_ = state_is_finite();
+  return finite_;
+}
+
+// One position-Verlet step (Gazzola et al. 2018, §3.3): kinematic half step, constraints,
+// loads, dynamic step, rate constraints and damping, kinematic half step.
+void Rod::step() {
+  const double dt = model_.time_step;
+  kinematic_half_step(0.5 * dt);
+  state_.time += 0.5 * dt;
+  for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
+
+  compute_internal_loads(model_, state_);
+  state_.external_forces.setZero();
+  state_.external_torques.setZero();
+  for (RodPart* part : loads_) part->add_loads(model_, state_);
+  for (RodPart* part : contact_) part->add_contact_loads(model_, state_);
+
+  dynamic_step(dt);
+  for (RodPart* part : constrain_rates_) part->constrain_rates(model_, state_);
+  for (RodPart* part : damp_rates_) part->damp_rates(model_, state_);
+
+  kinematic_half_step(0.5 * dt);
+  state_.time += 0.5 * dt;
+  for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
+}
+
+void Rod::kinematic_half_step(double half_dt) {
+  state_.positions += half_dt * state_.velocities;
+  for (int i = 0; i < model_.n_elements; ++i) {
+    const Eigen::Matrix3d rotation =
+        exp_rotation_minus(half_dt * state_.angular_velocities.col(i));
+    state_.directors[i] = rotation * state_.directors[i];
+  }
+}
+
+// m dv/dt = F_internal + F_external;  (J/e) dω/dt = T_internal + T_external.
+void Rod::dynamic_step(double dt) {
+  for (int j = 0; j < model_.n_nodes(); ++j) {
+    state_.velocities.col(j) += (dt * model_.inverse_node_masses[j]) *
+                                (state_.internal_forces.col(j) + state_.external_forces.col(j));
+  }
+  for (int i = 0; i < model_.n_elements; ++i) {
+    state_.angular_velocities.col(i) +=
+        (dt * state_.dilatations[i]) *
+        model_.inverse_inertia.col(i).cwiseProduct(state_.internal_torques.col(i) +
+                                                   state_.external_torques.col(i));
+  }
+}
+
+Eigen::Matrix3Xd Rod::sampled_node_positions(int count) const {
+  require(count >= 2, "need at least 2 sampled nodes, got " + std::to_string(count),
+          "Rod::sampled_node_positions");
+  Eigen::Matrix3Xd samples(3, count);
+  const int n = model_.n_elements;
+  for (int k = 0; k < count; ++k) {
+    const int node = static_cast<int>(std::lround(static_cast<double>(k) * n / (count - 1)));
+    samples.col(k) = state_.positions.col(node);
+  }
+  return samples;
+}
+
+Eigen::Quaterniond Rod::tip_quaternion() const {
+  Eigen::Quaterniond q(Eigen::Matrix3d(tip_directors().transpose()));
+  q.normalize();
+  if (q.w() < 0) q.coeffs() *= -1.0;  // one representative of ±q
+  return q;
+}
+
+RodEnergies Rod::energies() const {
+  RodEnergies energy;
+  const RodState& s = state_;
+  for (int j = 0; j < model_.n_nodes(); ++j) {
+    energy.translational_kinetic += 0.5 * model_.node_masses[j] * s.velocities.col(j).squaredNorm();
+  }
+  for (int i = 0; i < model_.n_elements; ++i) {
+    const Eigen::Vector3d omega = s.angular_velocities.col(i);
+    energy.rotational_kinetic +=
+        0.5 * omega.dot(model_.inertia.col(i).cwiseProduct(omega)) / s.dilatations[i];
+    const Eigen::Vector3d strain = s.shear_strains.col(i) - model_.rest_shear_strains.col(i);
+    energy.shear_stretch +=
+        0.5 * model_.rest_lengths[i] * strain.dot(model_.shear_stiffness.col(i).cwiseProduct(strain));
+  }
+  for (int j = 0; j < model_.n_voronoi(); ++j) {
+    const Eigen::Vector3d strain = s.curvatures.col(j) - model_.rest_curvatures.col(j);
+    energy.bend_twist += 0.5 * model_.rest_voronoi_lengths[j] *
+                         strain.dot(model_.bend_stiffness.col(j).cwiseProduct(strain));
+  }
+  return energy;
+}
+
+}  // namespace tendril::physics

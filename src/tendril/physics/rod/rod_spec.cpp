@@ -1,0 +1,46 @@
+#include "tendril/physics/rod/rod_spec.hpp"
+
+#include <cmath>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::physics {
+
+namespace {
+
+void require_positive(double value, const char* field) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw Error(std::string(field) + " must be finite and positive, got " + std::to_string(value),
+                "RodSpec");
+  }
+}
+
+void require_unit(const Eigen::Vector3d& v, const char* field) {
+  if (!v.allFinite() || std::abs(v.norm() - 1.0) > 1e-9) {
+    throw Error(std::string(field) + " must be a finite unit vector", "RodSpec");
+  }
+}
+
+}  // namespace
+
+void RodSpec::validate() const {
+  if (n_elements < 1) {
+    throw Error("n_elements must be at least 1, got " + std::to_string(n_elements), "RodSpec");
+  }
+  require_positive(length, "length");
+  require_positive(radius, "radius");
+  require_positive(density, "density");
+  require_positive(youngs_modulus, "youngs_modulus");
+  require_positive(shear_modulus, "shear_modulus");
+  require_positive(shear_coefficient, "shear_coefficient");
+  require_positive(time_step, "time_step");
+  if (!base_position.allFinite()) throw Error("base_position must be finite", "RodSpec");
+  require_unit(direction, "direction");
+  require_unit(normal, "normal");
+  if (std::abs(direction.dot(normal)) > 1e-9) {
+    throw Error("normal must be perpendicular to direction", "RodSpec");
+  }
+  if (!rest_curvature.allFinite()) throw Error("rest_curvature must be finite", "RodSpec");
+}
+
+}  // namespace tendril::physics

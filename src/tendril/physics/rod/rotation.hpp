@@ -1,0 +1,68 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace tendril::physics {
+
+// Rotations of director frames. Conventions (Gazzola et al. 2018): a director matrix Q has rows
+// d1, d2, d3 and maps lab-frame vectors to the material frame. A material-frame angular velocity
+// ω evolves the frame as dQ/dt = −[ω]× Q, so one step of length h is Q ← exp(−h[ω]×) Q; the
+// curvature κ between neighbouring frames follows the same rule along the arc length.
+
+// The rotation exp(−[θ]×) for a rotation vector θ (radians), by Rodrigues' formula. Small angles
+// use the Taylor series of sin φ / φ and (1 − cos φ) / φ², which are exact to double precision
+// for φ < 0.1 and avoid sin/cos in the common case of a small time step.
+inline Eigen::Matrix3d exp_rotation_minus(const Eigen::Vector3d& theta) {
+  const double phi2 = theta.squaredNorm();
+  double sin_over_phi, one_minus_cos_over_phi2;
+  if (phi2 < 1e-2) {
+    sin_over_phi = 1.0 - phi2 / 6.0 * (1.0 - phi2 / 20.0 * (1.0 - phi2 / 42.0 * (1.0 - phi2 / 72.0)));
+    one_minus_cos_over_phi2 =
+        0.5 * (1.0 - phi2 / 12.0 * (1.0 - phi2 / 30.0 * (1.0 - phi2 / 56.0 * (1.0 - phi2 / 90.0))));
+  } else {
+    const double phi = std::sqrt(phi2);
+    sin_over_phi = std::sin(phi) / phi;
+    one_minus_cos_over_phi2 = (1.0 - std::cos(phi)) / phi2;
+  }
+  // exp(−[θ]×) = I − (sin φ/φ)[θ]× + ((1 − cos φ)/φ²)[θ]×², with [θ]×² = θθᵀ − φ² I.
+  const double a = sin_over_phi, b = one_minus_cos_over_phi2;
+  const double x = theta.x(), y = theta.y(), z = theta.z();
+  Eigen::Matrix3d r;
+  r(0, 0) = 1.0 + b * (x * x - phi2);
+  r(1, 1) = 1.0 + b * (y * y - phi2);
+  r(2, 2) = 1.0 + b * (z * z - phi2);
+  r(0, 1) = a * z + b * x * y;
+  r(1, 0) = -a * z + b * x * y;
+  r(0, 2) = -a * y + b * x * z;
+  r(2, 0) = a * y + b * x * z;
+  r(1, 2) = a * x + b * y * z;
+  r(2, 1) = -a * x + b * y * z;
+  return r;
+}
+
+// The rotation vector a with exp([a]×) = R for a proper rotation R (angle below π).
+inline Eigen::Vector3d log_rotation(const Eigen::Matrix3d& r) {
+  // ½(R − Rᵀ)^∨ = sin θ · axis and (tr R − 1)/2 = cos θ.
+  const Eigen::Vector3d s(0.5 * (r(2, 1) - r(1, 2)), 0.5 * (r(0, 2) - r(2, 0)),
+                          0.5 * (r(1, 0) - r(0, 1)));
+  const double sin_theta = s.norm();
+  const double cos_theta = 0.5 * (r.trace() - 1.0);
+  const double theta = std::atan2(sin_theta, cos_theta);
+  // θ / sin θ, by series where sin θ is small (θ²/6 + 7θ⁴/360 + 31θ⁶/15120).
+  const double t2 = theta * theta;
+  const double factor = sin_theta < 1e-3
+                            ? 1.0 + t2 / 6.0 * (1.0 + t2 * (7.0 / 60.0) * (1.0 + t2 * (31.0 / 294.0)))
+                            : theta / sin_theta;
+  return factor * s;
+}
+
+// The 3×3 matrix [a]× with [a]× b = a × b.
+inline Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
+  Eigen::Matrix3d m;
+  m << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return m;
+}
+
+}  // namespace tendril::physics
