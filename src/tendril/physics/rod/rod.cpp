@@ -54,41 +54,46 @@ bool Rod::state_is_finite() const {
 
 bool Rod::advance(int steps) {
   if (!finite_) return false;
-  for (int s = 0; s < steps; ++s) step();
+  if (steps <= 0) return true;
+  // Position Verlet (Gazzola et al. 2018, §3.3), per step: half kinematic step, constraints,
+  // loads, dynamic step, rate constraints and damping, half kinematic step, constraints.
+  // Between two steps the second half of one and the first half of the next use the same
+  // rates, so they are taken as one full kinematic step.
+  const double dt = model_.time_step;
+  kinematic_step(0.5 * dt);
+  for (int s = 0; s < steps; ++s) {
+    state_.time += 0.5 * dt;
+    for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
+    dynamic_stage();
+    const bool last = s + 1 == steps;
+    kinematic_step(last ? 0.5 * dt : dt);
+    state_.time += 0.5 * dt;
+  }
+  for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
   // Read-outs (strains, energies, radii) describe the configuration at the end of the call.
   compute_strains(model_, state_);
   finite_ = state_is_finite();
   return finite_;
 }
 
-// One position-Verlet step (Gazzola et al. 2018, §3.3): kinematic half step, constraints,
-// loads, dynamic step, rate constraints and damping, kinematic half step.
-void Rod::step() {
-  const double dt = model_.time_step;
-  kinematic_half_step(0.5 * dt);
-  state_.time += 0.5 * dt;
-  for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
-
+// Loads at the mid-step configuration, then velocities and angular velocities.
+void Rod::dynamic_stage() {
   compute_internal_loads(model_, state_);
   state_.external_forces.setZero();
   state_.external_torques.setZero();
   for (RodPart* part : loads_) part->add_loads(model_, state_);
   for (RodPart* part : contact_) part->add_contact_loads(model_, state_);
 
-  dynamic_step(dt);
+  dynamic_step(model_.time_step);
   for (RodPart* part : constrain_rates_) part->constrain_rates(model_, state_);
   for (RodPart* part : damp_rates_) part->damp_rates(model_, state_);
-
-  kinematic_half_step(0.5 * dt);
-  state_.time += 0.5 * dt;
-  for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
 }
 
-void Rod::kinematic_half_step(double half_dt) {
-  state_.positions += half_dt * state_.velocities;
+void Rod::kinematic_step(double h) {
+  state_.positions += h * state_.velocities;
   for (int i = 0; i < model_.n_elements; ++i) {
     const Eigen::Matrix3d rotation =
-        exp_rotation_minus(half_dt * state_.angular_velocities.col(i));
+        exp_rotation_minus(h * state_.angular_velocities.col(i));
     state_.directors[i] = rotation * state_.directors[i];
   }
 }

@@ -86,8 +86,8 @@ class Rod {
   RodEnergies energies() const;
 
  private:
-  void step();
-  void kinematic_half_step(double half_dt);
+  void kinematic_step(double h);  // x += h v;  Q ← exp(−h [ω]×) Q
+  void dynamic_stage();
   void dynamic_step(double dt);
 
   RodModel model_;

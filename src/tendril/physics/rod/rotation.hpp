@@ -47,14 +47,20 @@ inline Eigen::Vector3d log_rotation(const Eigen::Matrix3d& r) {
   // ½(R − Rᵀ)^∨ = sin θ · axis and (tr R − 1)/2 = cos θ.
   const Eigen::Vector3d s(0.5 * (r(2, 1) - r(1, 2)), 0.5 * (r(0, 2) - r(2, 0)),
                           0.5 * (r(1, 0) - r(0, 1)));
-  const double sin_theta = s.norm();
+  const double sin2 = s.squaredNorm();
   const double cos_theta = 0.5 * (r.trace() - 1.0);
-  const double theta = std::atan2(sin_theta, cos_theta);
-  // θ / sin θ, by series where sin θ is small (θ²/6 + 7θ⁴/360 + 31θ⁶/15120).
-  const double t2 = theta * theta;
-  const double factor = sin_theta < 1e-3
-                            ? 1.0 + t2 / 6.0 * (1.0 + t2 * (7.0 / 60.0) * (1.0 + t2 * (31.0 / 294.0)))
-                            : theta / sin_theta;
+  double factor;  // θ / sin θ
+  if (cos_theta > 0.0 && sin2 < 1e-2) {
+    // θ = asin(sin θ) below 90°: the series of asin(x)/x to x¹⁶ is exact to double precision
+    // for x < 0.1 and avoids atan2 for the small angles between neighbouring elements.
+    const double x = sin2;
+    factor = 1.0 + x * (1.0 / 6 + x * (3.0 / 40 + x * (5.0 / 112 + x * (35.0 / 1152 +
+             x * (63.0 / 2816 + x * (231.0 / 13312 + x * (143.0 / 10240 + x * (6435.0 / 557056))))))));
+  } else {
+    const double sin_theta = std::sqrt(sin2);
+    // θ = π has no defined axis in this form; frames that far apart are a blown-up state.
+    factor = sin_theta > 0.0 ? std::atan2(sin_theta, cos_theta) / sin_theta : 0.0;
+  }
   return factor * s;
 }
 

@@ -1,0 +1,74 @@
+// Cost of one Cosserat-rod time step for the Elastica RL arms, against PyElastica.
+//
+//   build/bench/rod_step_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// PyElastica's figures (../shared/anchors/README.md, the same rods on this kind of machine)
+// cannot be re-measured here: PyElastica is not packaged for Debian.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "tendril/physics/arms/elastica_arm.hpp"
+
+namespace tendril::physics {
+namespace {
+
+constexpr double kPyElasticaCase1MicrosecondsPerStep = 24.2;  // 20 elements, dt 0.2 ms
+constexpr double kPyElasticaCase3MicrosecondsPerStep = 32.4;  // 50 elements, dt 0.1 ms
+
+// A smooth, time-varying muscle pattern in all three material directions, as an RL policy
+// would command (|c| up to the paper's 75 N·m peak scaled down to keep the arm in range).
+void set_muscles(ElasticaArm& arm, double phase) {
+  const int n = arm.rod.n_elements();
+  for (int i = 0; i < n; ++i) {
+    const double s = (i + 1.0) / n;
+    arm.muscles->couples().col(i) << 8.0 * std::sin(3.0 * s + phase), 6.0 * std::cos(2.0 * s - phase),
+        1.0 * std::sin(s + 0.5 * phase);
+  }
+}
+
+void run(benchmark::State& state, ElasticaArmSpec spec, double pyelastica_us, double bend_sign) {
+  ElasticaArm arm = build_elastica_arm(spec);
+  set_muscles(arm, 0.0);
+  // Bend the arm towards −x (case 3: into the wall of cylinders) before timing.
+  arm.muscles->couples().row(1).array() += bend_sign * 20.0;
+  if (!arm.rod.advance(static_cast<int>(0.4 / spec.time_step))) state.SkipWithError("arm blew up");
+  int64_t steps = 0;
+  double phase = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    // One action's worth of substeps per iteration, as in the RL environments (1.4 ms).
+    const int substeps = static_cast<int>(std::lround(1.4e-3 / spec.time_step));
+    if (!arm.rod.advance(substeps)) {
+      state.SkipWithError("arm blew up");
+      break;
+    }
+    steps += substeps;
+    phase += 1e-3;
+    set_muscles(arm, phase);
+    arm.muscles->couples().row(1).array() += bend_sign * 20.0;
+  }
+  const double elapsed_us =
+      std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+  const double us_per_step = elapsed_us / static_cast<double>(std::max<int64_t>(steps, 1));
+  state.counters["us_per_step"] = us_per_step;
+  state.counters["pyelastica_us_per_step"] = pyelastica_us;
+  state.counters["speedup"] = pyelastica_us / us_per_step;
+}
+
+void BM_Case1Arm20Elements(benchmark::State& state) {
+  run(state, ElasticaArmSpec::tracking(), kPyElasticaCase1MicrosecondsPerStep, 0.0);
+}
+void BM_Case3Arm50ElementsEightCylinders(benchmark::State& state) {
+  run(state, ElasticaArmSpec::structured_obstacles(), kPyElasticaCase3MicrosecondsPerStep, -1.0);
+}
+
+BENCHMARK(BM_Case1Arm20Elements)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+BENCHMARK(BM_Case3Arm50ElementsEightCylinders)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+
+}  // namespace
+}  // namespace tendril::physics
+
+BENCHMARK_MAIN();

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "tendril/physics/contact/cylinder_contact.hpp"
+#include "tendril/physics/forcing/loads.hpp"
+#include "tendril/physics/rod/rod.hpp"
+
+namespace tendril::physics {
+
+// The soft arm of the Elastica RL paper (Naughton et al. 2021, Tables 6–7; SPEC M2): L 1 m,
+// radius 5 cm, E 10 MPa, ρ 1000 kg/m³, G = E / (1 + 0.5), α_c = 4/3, base clamped, paper-era
+// internal damping ν = 30 kg/(m·s), muscle couples on every element in the material frame.
+struct ElasticaArmSpec {
+  int n_elements = 20;
+  double time_step = 2.0e-4;
+  Eigen::Vector3d base_position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitY();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  double damping = 30.0;
+  std::vector<Cylinder> obstacles;  // soft-wall contact with k 8e4, γ 4 when non-empty
+  SoftWall wall{8.0e4, 4.0, true};
+
+  // Cases 1–2: 20 elements, dt 0.2 ms, base at the origin along +y, normal +z.
+  static ElasticaArmSpec tracking();
+  // Case 3: 50 elements, dt 0.1 ms, base (0, 0.5, 0) along +z, normal +y, and the wall of eight
+  // cylinders (radius 0.1 m, length 1 m, axis +y from y = 0) with one 0.17 m gap.
+  static ElasticaArmSpec structured_obstacles();
+};
+
+struct ElasticaArm {
+  Rod rod;
+  ElementCouples* muscles;  // owned by `rod`; material-frame couples per element, N·m
+};
+
+ElasticaArm build_elastica_arm(const ElasticaArmSpec& spec);
+
+}  // namespace tendril::physics
