@@ -14,6 +14,9 @@ ElasticaArmSpec ElasticaArmSpec::structured_obstacles() {
   spec.base_position = Eigen::Vector3d(0.0, 0.5, 0.0);
   spec.direction = Eigen::Vector3d::UnitZ();
   spec.normal = Eigen::Vector3d::UnitY();
+  spec.actuation.control_points = 2;
+  spec.actuation.directions = {true, false, false};
+  spec.actuation.max_change_per_step = 0.01;
   // (x, z) of the axes: two posts, then a wall at x = −0.4 with one gap (SPEC M2, case 3).
   const double xz[8][2] = {{-0.6, 0.12}, {-0.2, 0.12}, {-0.4, 0.37}, {-0.4, 0.00},
                            {-0.4, -0.20}, {-0.4, -0.40}, {-0.4, 0.57}, {-0.4, 0.77}};
@@ -37,11 +40,11 @@ ElasticaArm build_elastica_arm(const ElasticaArmSpec& spec) {
   rod_spec.direction = spec.direction;
   rod_spec.normal = spec.normal;
   rod_spec.time_step = spec.time_step;
-  ElasticaArm arm{Rod(rod_spec), nullptr};
+  ElasticaArm arm{Rod(rod_spec), nullptr, nullptr};
   arm.rod.add<FixedEnd>();
   arm.rod.add<InternalDamping>(spec.damping);
-  arm.muscles = &arm.rod.add<ElementCouples>();
-  if (!spec.obstacles.empty()) arm.rod.add<CylinderContact>(spec.obstacles, spec.wall);
+  arm.muscles = &arm.rod.add<SplineActuation>(spec.actuation);
+  if (!spec.obstacles.empty()) arm.contact = &arm.rod.add<CylinderContact>(spec.obstacles, spec.wall);
   return arm;
 }
 

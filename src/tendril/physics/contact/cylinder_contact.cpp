@@ -26,6 +26,7 @@ CylinderContact::CylinderContact(std::vector<Cylinder> cylinders, SoftWall wall)
 }
 
 void CylinderContact::add_contact_loads(const RodModel& model, RodState& state) {
+  contacts_ = 0;
   for (std::size_t c = 0; c < cylinders_.size(); ++c) {
     const Cylinder& cylinder = cylinders_[c];
     const Bounds& bounds = bounds_[c];
@@ -42,6 +43,7 @@ void CylinderContact::add_contact_loads(const RodModel& model, RodState& state) 
       const double distance = gap.norm();
       const double penetration = state.radii[i] + cylinder.radius - distance;
       if (penetration < 0.0 || distance <= 0.0) continue;
+      ++contacts_;
       add_wall_response(wall_, model, state, i, gap / distance, penetration);
     }
   }

@@ -30,6 +30,8 @@ class CylinderContact final : public RodPart {
   void add_contact_loads(const RodModel& model, RodState& state) override;
 
   const std::vector<Cylinder>& cylinders() const { return cylinders_; }
+  // Element–cylinder pairs in contact during the last step.
+  int contacts() const { return contacts_; }
 
  private:
   struct Bounds {
@@ -39,6 +41,7 @@ class CylinderContact final : public RodPart {
   std::vector<Cylinder> cylinders_;
   std::vector<Bounds> bounds_;
   SoftWall wall_;
+  int contacts_ = 0;
 };
 
 // Soft-wall contact with a fixed plane through `point` with outward unit `normal`: an element
