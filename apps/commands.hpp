@@ -1,0 +1,11 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tendril::apps {
+
+// Each command takes the arguments after its name and returns the process exit code.
+int simulate_command(const std::vector<std::string>& args);
+
+}  // namespace tendril::apps
