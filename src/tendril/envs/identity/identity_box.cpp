@@ -1,0 +1,37 @@
+#include "tendril/envs/identity/identity_box.hpp"
+
+#include <cmath>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::envs {
+
+std::unique_ptr<Env> IdentityBox::create(const Config& params) {
+  Params values;
+  values.eps = params.get_or<double>("eps", values.eps);
+  return std::make_unique<IdentityBox>(values);
+}
+
+IdentityBox::IdentityBox(Params params)
+    : space_(Space::box(1, -1.0f, 1.0f)), eps_(static_cast<float>(params.eps)) {
+  require(params.eps > 0.0, "eps must be positive, got " + std::to_string(params.eps),
+          "IdentityBox-v0");
+}
+
+Observation IdentityBox::reset(std::optional<uint64_t> seed) {
+  if (seed) rng_ = Rng(*seed);
+  state_ = space_.sample(rng_)[0];
+  return Observation::Constant(1, state_);
+}
+
+Step IdentityBox::step(const Action& action) {
+  check_action(space_, action, "IdentityBox-v0");
+  Step result;
+  // SB3 compares in float32: s − eps ≤ a ≤ s + eps.
+  result.reward = state_ - eps_ <= action[0] && action[0] <= state_ + eps_ ? 1.0 : 0.0;
+  state_ = space_.sample(rng_)[0];
+  result.observation = Observation::Constant(1, state_);
+  return result;
+}
+
+}  // namespace tendril::envs

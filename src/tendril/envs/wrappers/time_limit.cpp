@@ -1,0 +1,28 @@
+#include "tendril/envs/wrappers/time_limit.hpp"
+
+#include <string>
+
+namespace tendril::envs {
+
+TimeLimit::TimeLimit(std::unique_ptr<Env> inner, int64_t max_episode_steps)
+    : Wrapper(std::move(inner)), max_episode_steps_(max_episode_steps) {
+  require(max_episode_steps >= 1,
+          "max_episode_steps must be at least 1, got " + std::to_string(max_episode_steps),
+          "envs::TimeLimit");
+}
+
+Observation TimeLimit::reset(std::optional<uint64_t> seed) {
+  elapsed_steps_ = 0;
+  has_reset_ = true;
+  return inner_->reset(seed);
+}
+
+Step TimeLimit::step(const Action& action) {
+  require(has_reset_, "step called before reset", "envs::TimeLimit");
+  Step result = inner_->step(action);
+  ++elapsed_steps_;
+  if (elapsed_steps_ >= max_episode_steps_ && !result.terminated) result.truncated = true;
+  return result;
+}
+
+}  // namespace tendril::envs

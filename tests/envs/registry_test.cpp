@@ -1,0 +1,109 @@
+#include "tendril/envs/registry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+#include "tendril/core/error.hpp"
+#include "tendril/envs/classic_control/pendulum.hpp"
+#include "tendril/envs/wrappers/time_limit.hpp"
+
+namespace tendril::envs {
+namespace {
+
+std::string message_of(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Registry, ListsTheBuiltinReferenceTasks) {
+  EXPECT_EQ(registered_ids(),
+            (std::vector<std::string>{"CartPole-v1", "Identity-v0", "IdentityBox-v0",
+                                      "MountainCarContinuous-v0", "Pendulum-v1"}));
+  EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
+  EXPECT_EQ(builtin_registry().spec("CartPole-v1").max_episode_steps, 500);
+  EXPECT_EQ(builtin_registry().spec("MountainCarContinuous-v0").max_episode_steps, 999);
+  EXPECT_EQ(builtin_registry().spec("Identity-v0").max_episode_steps, 100);
+  EXPECT_EQ(builtin_registry().spec("IdentityBox-v0").max_episode_steps, 100);
+}
+
+TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
+  EXPECT_EQ(message_of([] { make("Pendulum-v0"); }),
+            "envs::make: unknown environment id 'Pendulum-v0'; registered ids: CartPole-v1, "
+            "Identity-v0, IdentityBox-v0, MountainCarContinuous-v0, Pendulum-v1");
+}
+
+TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {
+  const Config config = Config::parse("env:\n  params: {g: 9.81, gravity: 3}\n", "exp.yaml");
+  EXPECT_EQ(message_of([&] { make("Pendulum-v1", config.child("env").child("params")); }),
+            "exp.yaml: unknown key 'env.params.gravity', not a parameter of environment "
+            "'Pendulum-v1'");
+  const Config cart = Config::parse("mass: 2\n", "cart.yaml");
+  EXPECT_EQ(message_of([&] { make("CartPole-v1", cart); }),
+            "cart.yaml: unknown key 'mass', not a parameter of environment 'CartPole-v1'");
+}
+
+TEST(Registry, MakeAppliesParametersAndTheTimeLimit) {
+  const auto env = make("Pendulum-v1", Config::parse("g: 2.5\nmax_episode_steps: 3\n"));
+  auto* limit = dynamic_cast<TimeLimit*>(env.get());
+  ASSERT_NE(limit, nullptr);
+  EXPECT_EQ(limit->max_episode_steps(), 3);
+  auto& pendulum = dynamic_cast<Pendulum&>(limit->inner());
+  env->reset(0);
+  pendulum.set_state(0.5, 0.0);
+  env->step(Action::Zero(1));
+  EXPECT_NEAR(pendulum.theta_dot(), 1.5 * 2.5 * std::sin(0.5) * 0.05, 1e-12);
+  EXPECT_FALSE(env->step(Action::Zero(1)).truncated);
+  EXPECT_TRUE(env->step(Action::Zero(1)).truncated);
+  EXPECT_NE(message_of([] {
+              make("CartPole-v1", Config::parse("max_episode_steps: 0"));
+            }).find("max_episode_steps must be at least 1"),
+            std::string::npos);
+}
+
+TEST(Registry, AddingAnEnvironmentIsOneCall) {
+  Registry registry;
+  registry.add({"Family/Swing-v2", &Pendulum::create, std::nullopt, "a pendulum without limit"});
+  EXPECT_TRUE(registry.contains("Family/Swing-v2"));
+  const auto env = registry.make("Family/Swing-v2");
+  EXPECT_NE(dynamic_cast<Pendulum*>(env.get()), nullptr);  // no time limit registered
+  EXPECT_NE(message_of([&] {
+              registry.add({"Family/Swing-v2", &Pendulum::create, {}, ""});
+            }).find("already registered"),
+            std::string::npos);
+  EXPECT_NE(message_of([&] {
+              registry.add({"Swing", &Pendulum::create, {}, ""});
+            }).find("not of the form Name-v<N>"),
+            std::string::npos);
+  EXPECT_THROW(registry.add({"Empty-v0", nullptr, {}, ""}), Error);
+}
+
+TEST(Registry, EveryBuiltinEnvironmentRunsAnEpisodeToItsLimit) {
+  for (const std::string& id : registered_ids()) {
+    const auto env = make(id);
+    const int64_t limit = *builtin_registry().spec(id).max_episode_steps;
+    Rng rng(1);
+    env->reset(0);
+    int64_t steps = 0;
+    bool ended = false;
+    while (!ended) {
+      const Step step = env->step(env->action_space().sample(rng));
+      ++steps;
+      ASSERT_TRUE(env->observation_space().contains(step.observation))
+          << id << " step " << steps << ": " << step.observation.transpose();
+      ASSERT_FALSE(step.terminated && step.truncated) << id;
+      ended = step.terminated || step.truncated;
+      ASSERT_LE(steps, limit) << id;
+      if (step.truncated) {
+        EXPECT_EQ(steps, limit) << id;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tendril::envs
