@@ -60,7 +60,7 @@ TEST(RodInvariance, RotatedInitialStateGivesRotatedTrajectory) {
     EXPECT_LT((rotation * a.velocities - b.velocities).cwiseAbs().maxCoeff(), 1e-10);
     EXPECT_LT((a.angular_velocities - b.angular_velocities).cwiseAbs().maxCoeff(), 1e-10);
     for (int i = 0; i < reference.rod.n_elements(); ++i) {
-      EXPECT_LT((a.directors[i] * rotation.transpose() - b.directors[i]).cwiseAbs().maxCoeff(),
+      EXPECT_LT((a.director(i) * rotation.transpose() - b.director(i)).cwiseAbs().maxCoeff(),
                 1e-10);
     }
   }

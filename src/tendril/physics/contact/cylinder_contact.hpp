@@ -27,6 +27,7 @@ class CylinderContact final : public RodPart {
  public:
   CylinderContact(std::vector<Cylinder> cylinders, SoftWall wall = {});
   uint32_t stages() const override { return kContact; }
+  void attach(const RodModel& model, const RodState& state) override;
   void add_contact_loads(const RodModel& model, RodState& state) override;
 
   const std::vector<Cylinder>& cylinders() const { return cylinders_; }
@@ -34,14 +35,13 @@ class CylinderContact final : public RodPart {
   int contacts() const { return contacts_; }
 
  private:
-  struct Bounds {
-    Eigen::Vector3d centre;
-    double reach;  // half the axis length plus the radius
-  };
   std::vector<Cylinder> cylinders_;
-  std::vector<Bounds> bounds_;
   SoftWall wall_;
   int contacts_ = 0;
+  // Broad phase, per step: element midpoints and how far from its midpoint an element reaches.
+  Vectors midpoints_;
+  Eigen::VectorXd element_reach_;
+  Eigen::VectorXd near_;  // 1 where an element's midpoint is within reach of the current axis
 };
 
 // Soft-wall contact with a fixed plane through `point` with outward unit `normal`: an element

@@ -30,13 +30,13 @@ void EndForces::add_loads(const RodModel& model, RodState& state) {
 }
 
 void NodeForces::attach(const RodModel& model, const RodState&) {
-  forces_ = Eigen::Matrix3Xd::Zero(3, model.n_nodes());
+  forces_ = Vectors::Zero(3, model.n_nodes());
 }
 
 void NodeForces::add_loads(const RodModel&, RodState& state) { state.external_forces += forces_; }
 
 void ElementCouples::attach(const RodModel& model, const RodState&) {
-  couples_ = Eigen::Matrix3Xd::Zero(3, model.n_elements);
+  couples_ = Vectors::Zero(3, model.n_elements);
 }
 
 void ElementCouples::add_loads(const RodModel&, RodState& state) {

@@ -40,10 +40,10 @@ class NodeForces final : public RodPart {
   void attach(const RodModel& model, const RodState& state) override;
   void add_loads(const RodModel& model, RodState& state) override;
 
-  Eigen::Matrix3Xd& forces() { return forces_; }  // 3 × (n + 1)
+  Vectors& forces() { return forces_; }  // 3 × (n + 1)
 
  private:
-  Eigen::Matrix3Xd forces_;
+  Vectors forces_;
 };
 
 // Per-element external couples in the material frame (N·m; components along d1, d2, d3), set
@@ -55,10 +55,10 @@ class ElementCouples final : public RodPart {
   void attach(const RodModel& model, const RodState& state) override;
   void add_loads(const RodModel& model, RodState& state) override;
 
-  Eigen::Matrix3Xd& couples() { return couples_; }  // 3 × n
+  Vectors& couples() { return couples_; }  // 3 × n
 
  private:
-  Eigen::Matrix3Xd couples_;
+  Vectors couples_;
 };
 
 }  // namespace tendril::physics

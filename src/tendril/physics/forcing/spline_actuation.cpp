@@ -43,7 +43,7 @@ void SplineActuation::attach(const RodModel& model, const RodState&) {
   for (int i = 0; i < n; ++i) distal[i] = (arc += model.rest_lengths[i]);
   const CubicSplineMap spline(knots, distal);
   weights_ = spline.weights().middleCols(1, cp);  // the pinned end values are zero
-  couples_ = Eigen::Matrix3Xd::Zero(3, n);
+  couples_ = Vectors::Zero(3, n);
 }
 
 void SplineActuation::set_targets(const Eigen::VectorXd& targets) {

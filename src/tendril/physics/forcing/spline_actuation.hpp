@@ -43,7 +43,7 @@ class SplineActuation final : public RodPart {
   const Eigen::VectorXd& current() const { return current_; }
   const SplineActuationSpec& spec() const { return spec_; }
   // Couples of the current control points (3 × n, material frame, N·m).
-  const Eigen::Matrix3Xd& couples() const { return couples_; }
+  const Vectors& couples() const { return couples_; }
 
  private:
   void update_couples();
@@ -51,7 +51,7 @@ class SplineActuation final : public RodPart {
   SplineActuationSpec spec_;
   Eigen::MatrixXd weights_;  // elements × control points (ends pinned at 0, so left out)
   Eigen::VectorXd targets_, current_;
-  Eigen::Matrix3Xd couples_;
+  Vectors couples_;
 };
 
 }  // namespace tendril::physics

@@ -18,12 +18,12 @@ FixedEnd::FixedEnd(const Eigen::Vector3d& position, const Eigen::Matrix3d& direc
 void FixedEnd::attach(const RodModel&, const RodState& state) {
   if (given_) return;
   position_ = state.positions.col(0);
-  directors_ = state.directors[0];
+  directors_ = state.director(0);
 }
 
 void FixedEnd::constrain_values(const RodModel&, RodState& state) {
   state.positions.col(0) = position_;
-  state.directors[0] = directors_;
+  state.set_director(0, directors_);
 }
 
 void FixedEnd::constrain_rates(const RodModel&, RodState& state) {
@@ -44,14 +44,14 @@ void GeneralConstraint::attach(const RodModel& model, const RodState& state) {
               std::to_string(model.n_elements - 1) + "]",
           "GeneralConstraint");
   position_ = state.positions.col(node_);
-  directors_ = state.directors[element_];
+  directors_ = state.director(element_);
 }
 
 void GeneralConstraint::constrain_values(const RodModel&, RodState& state) {
   for (int axis = 0; axis < 3; ++axis) {
     if (translations_[axis]) state.positions(axis, node_) = position_[axis];
   }
-  if (rotations_[0] && rotations_[1] && rotations_[2]) state.directors[element_] = directors_;
+  if (rotations_[0] && rotations_[1] && rotations_[2]) state.set_director(element_, directors_);
 }
 
 void GeneralConstraint::constrain_rates(const RodModel&, RodState& state) {

@@ -12,13 +12,23 @@ InternalDamping::InternalDamping(double coefficient) : coefficient_(coefficient)
 }
 
 void InternalDamping::add_loads(const RodModel& model, RodState& state) {
-  for (int i = 0; i < model.n_elements; ++i) {
-    const double scale = coefficient_ * state.lengths[i];
-    const Eigen::Vector3d half_force =
-        (0.25 * scale) * (state.velocities.col(i) + state.velocities.col(i + 1));
-    state.external_forces.col(i) -= half_force;
-    state.external_forces.col(i + 1) -= half_force;
-    state.external_torques.col(i) -= scale * state.angular_velocities.col(i);
+  const int n = model.n_elements;
+  const double nu = coefficient_;
+  const double* length = state.lengths.data();
+  for (int k = 0; k < 3; ++k) {
+    const double* v = state.velocities.row(k).data();
+    const double* w = state.angular_velocities.row(k).data();
+    double* force = state.external_forces.row(k).data();
+    double* torque = state.external_torques.row(k).data();
+    // Node j receives half the force ν l v̄ of each element it bounds.
+    force[0] -= 0.25 * nu * length[0] * (v[0] + v[1]);
+#pragma omp simd
+    for (int j = 1; j < n; ++j) {
+      force[j] -= 0.25 * nu * (length[j - 1] * (v[j - 1] + v[j]) + length[j] * (v[j] + v[j + 1]));
+    }
+    force[n] -= 0.25 * nu * length[n - 1] * (v[n - 1] + v[n]);
+#pragma omp simd
+    for (int i = 0; i < n; ++i) torque[i] -= nu * length[i] * w[i];
   }
 }
 

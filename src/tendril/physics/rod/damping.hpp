@@ -33,7 +33,7 @@ class AnalyticalLinearDamping final : public RodPart {
  private:
   double translational_, rotational_;
   Eigen::VectorXd velocity_factors_;     // per node
-  Eigen::Matrix3Xd angular_factors_;     // per element and material axis
+  Vectors angular_factors_;     // per element and material axis
 };
 
 }  // namespace tendril::physics

@@ -78,11 +78,11 @@ class Rod {
   Eigen::Vector3d tip_velocity() const { return state_.velocities.col(model_.n_elements); }
   // Directors of the last element (rows d1 d2 d3) and the unit quaternion of the rotation whose
   // columns are d1 d2 d3 (material → lab).
-  const Eigen::Matrix3d& tip_directors() const { return state_.directors.back(); }
+  Eigen::Matrix3d tip_directors() const { return state_.director(model_.n_elements - 1); }
   Eigen::Quaterniond tip_quaternion() const;
   // Strains of the current configuration: σ per element, κ per interior Voronoi point.
-  const Eigen::Matrix3Xd& shear_strains() const { return state_.shear_strains; }
-  const Eigen::Matrix3Xd& curvatures() const { return state_.curvatures; }
+  const Vectors& shear_strains() const { return state_.shear_strains; }
+  const Vectors& curvatures() const { return state_.curvatures; }
   RodEnergies energies() const;
 
  private:

@@ -22,12 +22,12 @@ RodModel RodModel::build(const RodSpec& spec) {
   for (int j = 0; j + 1 < n; ++j) {
     m.rest_voronoi_lengths[j] = 0.5 * (m.rest_lengths[j] + m.rest_lengths[j + 1]);
   }
-  m.rest_shear_strains = Eigen::Matrix3Xd::Zero(3, n);
+  m.rest_shear_strains = Vectors::Zero(3, n);
   m.rest_curvatures = spec.rest_curvature.replicate(1, std::max(n - 1, 0));
 
   m.shear_stiffness.resize(3, n);
   m.inertia.resize(3, n);
-  Eigen::Matrix3Xd element_bend(3, n);
+  Vectors element_bend(3, n);
   m.node_masses = Eigen::VectorXd::Zero(n + 1);
   for (int i = 0; i < n; ++i) {
     const double area = m.rest_areas[i];

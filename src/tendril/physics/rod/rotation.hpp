@@ -42,26 +42,30 @@ inline Eigen::Matrix3d exp_rotation_minus(const Eigen::Vector3d& theta) {
   return r;
 }
 
+// θ / sin θ as a function of x = sin² θ, for θ below 90°: the series of asin(s)/s to s²², exact
+// to double precision for x < kSmallAngleSine2 (θ < 11.5°). Branch-free, so loops over elements
+// vectorize; larger angles take atan2.
+constexpr double kSmallAngleSine2 = 4e-2;
+inline double theta_over_sin_theta_series(double x) {
+  return 1.0 + x * (1.0 / 6 + x * (3.0 / 40 + x * (5.0 / 112 + x * (35.0 / 1152 +
+         x * (63.0 / 2816 + x * (231.0 / 13312 + x * (143.0 / 10240 + x * (6435.0 / 557056 +
+         x * (12155.0 / 1245184 + x * (46189.0 / 5505024 + x * (88179.0 / 12058624)))))))))));
+}
+
+// θ / sin θ from sin² θ and cos θ, for any angle in [0, π).
+inline double theta_over_sin_theta(double sin2, double cos_theta) {
+  if (cos_theta > 0.0 && sin2 < kSmallAngleSine2) return theta_over_sin_theta_series(sin2);
+  const double sin_theta = std::sqrt(sin2);
+  // θ = π has no defined axis in this form; frames that far apart are a blown-up state.
+  return sin_theta > 0.0 ? std::atan2(sin_theta, cos_theta) / sin_theta : 0.0;
+}
+
 // The rotation vector a with exp([a]×) = R for a proper rotation R (angle below π).
 inline Eigen::Vector3d log_rotation(const Eigen::Matrix3d& r) {
   // ½(R − Rᵀ)^∨ = sin θ · axis and (tr R − 1)/2 = cos θ.
   const Eigen::Vector3d s(0.5 * (r(2, 1) - r(1, 2)), 0.5 * (r(0, 2) - r(2, 0)),
                           0.5 * (r(1, 0) - r(0, 1)));
-  const double sin2 = s.squaredNorm();
-  const double cos_theta = 0.5 * (r.trace() - 1.0);
-  double factor;  // θ / sin θ
-  if (cos_theta > 0.0 && sin2 < 1e-2) {
-    // θ = asin(sin θ) below 90°: the series of asin(x)/x to x¹⁶ is exact to double precision
-    // for x < 0.1 and avoids atan2 for the small angles between neighbouring elements.
-    const double x = sin2;
-    factor = 1.0 + x * (1.0 / 6 + x * (3.0 / 40 + x * (5.0 / 112 + x * (35.0 / 1152 +
-             x * (63.0 / 2816 + x * (231.0 / 13312 + x * (143.0 / 10240 + x * (6435.0 / 557056))))))));
-  } else {
-    const double sin_theta = std::sqrt(sin2);
-    // θ = π has no defined axis in this form; frames that far apart are a blown-up state.
-    factor = sin_theta > 0.0 ? std::atan2(sin_theta, cos_theta) / sin_theta : 0.0;
-  }
-  return factor * s;
+  return theta_over_sin_theta(s.squaredNorm(), 0.5 * (r.trace() - 1.0)) * s;
 }
 
 // The 3×3 matrix [a]× with [a]× b = a × b.
