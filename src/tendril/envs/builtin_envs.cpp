@@ -3,6 +3,10 @@
 #include "tendril/envs/classic_control/cart_pole.hpp"
 #include "tendril/envs/classic_control/mountain_car_continuous.hpp"
 #include "tendril/envs/classic_control/pendulum.hpp"
+#include "tendril/envs/elastica/oriented_reach.hpp"
+#include "tendril/envs/elastica/structured_obstacles.hpp"
+#include "tendril/envs/elastica/tracking_3d.hpp"
+#include "tendril/envs/elastica/unstructured_obstacles.hpp"
 #include "tendril/envs/identity/identity.hpp"
 #include "tendril/envs/identity/identity_box.hpp"
 
@@ -18,6 +22,19 @@ void register_builtin_envs(Registry& registry) {
   registry.add(
       {"Identity-v0", &Identity::create, 100, "repeat a one-hot state as a discrete action"});
   registry.add({"IdentityBox-v0", &IdentityBox::create, 100, "repeat a scalar state within eps"});
+  // The Elastica soft-arm control cases 1–4 (seed 000, SPEC M2); limits are 10 s, 2 s, 5 s, 5 s
+  // of 1.4 ms RL steps.
+  registry.add({"Elastica/Tracking3D-v0", &elastica::Tracking3D::create,
+                elastica::Tracking3D::kEpisodeSteps, "soft arm tracks a moving target (case 1)"});
+  registry.add({"Elastica/OrientedReach-v0", &elastica::OrientedReach::create,
+                elastica::OrientedReach::kEpisodeSteps,
+                "soft arm reaches a target position and orientation (case 2)"});
+  registry.add({"Elastica/StructuredObstacles-v0", &elastica::StructuredObstacles::create,
+                elastica::StructuredObstacles::kEpisodeSteps,
+                "soft arm reaches through a gap in a wall of cylinders (case 3)"});
+  registry.add({"Elastica/UnstructuredObstacles-v0", &elastica::UnstructuredObstacles::create,
+                elastica::UnstructuredObstacles::kEpisodeSteps,
+                "soft arm reaches through a random nest of cylinders (case 4)"});
 }
 
 }  // namespace tendril::envs

@@ -1,0 +1,102 @@
+#include "tendril/envs/elastica/elastica_arm_env.hpp"
+
+#include <limits>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::envs::elastica {
+
+ElasticaArmEnv::ElasticaArmEnv(Setup setup)
+    : id_(std::move(setup.id)),
+      arm_spec_(std::move(setup.arm)),
+      arm_(physics::build_elastica_arm(arm_spec_)),
+      substeps_per_action_(setup.substeps_per_action),
+      observation_size_(setup.observation_size),
+      nan_penalty_(setup.nan_penalty),
+      obstacles_(std::move(setup.obstacles)),
+      observation_space_(Space::box(observation_size_, -std::numeric_limits<float>::infinity(),
+                                    std::numeric_limits<float>::infinity())),
+      action_space_(Space::box(arm_spec_.actuation.action_size(), -1.0f, 1.0f)),
+      muscle_targets_(Eigen::VectorXd::Zero(arm_spec_.actuation.action_size())),
+      last_observation_(Observation::Zero(observation_size_)) {
+  require(substeps_per_action_ >= 1, "substeps_per_action must be at least 1", id_);
+  info_.set("distance", 0.0);
+  info_.set("is_success", 0.0);
+  info_.set("nan", 0.0);
+}
+
+Observation ElasticaArmEnv::reset(std::optional<uint64_t> seed) {
+  if (seed) rng_ = Rng(*seed);
+  arm_ = physics::build_elastica_arm(arm_spec_);
+  reset_target(rng_);
+  last_observation_ = observe();
+  last_distance_ = (rod().tip_position() - target_position_).norm();
+  return last_observation_;
+}
+
+Step ElasticaArmEnv::step(const Action& action) {
+  check_action(action_space_, action, id_);
+  muscle_targets_ = action.cast<double>();
+  arm_.muscles->set_targets(muscle_targets_);
+  bool finite = arm_.rod.advance(substeps_per_action_);
+
+  Step result;
+  if (finite) {
+    advance_target(rng_);
+    result.observation = observe();
+    finite = result.observation.allFinite();
+  }
+  if (finite) {
+    const double distance = (rod().tip_position() - target_position_).norm();
+    result.reward = task_reward(distance, info_);
+    info_.set("distance", distance);
+    info_.set("nan", 0.0);
+    last_observation_ = result.observation;
+    last_distance_ = distance;
+  } else {
+    // Seed 000: "a penalty term … was added any time a NaN was detected in the state
+    // information … Detection of a NaN would cause the episode to end."
+    result.observation = last_observation_;
+    result.reward = nan_penalty_;
+    result.terminated = true;
+    info_.set("distance", last_distance_);
+    info_.set("is_success", 0.0);
+    info_.set("nan", 1.0);
+  }
+  result.info = info_;
+  return result;
+}
+
+Observation ElasticaArmEnv::observe() const {
+  Observation observation(observation_size_);
+  ObservationWriter writer(observation);
+  write_observation(writer);
+  // A plain check rather than `require`, whose message would be built on every step.
+  if (writer.written() != observation_size_) {
+    throw Error("wrote " + std::to_string(writer.written()) + " observation values, expected " +
+                    std::to_string(observation_size_),
+                id_);
+  }
+  return observation;
+}
+
+void ElasticaArmEnv::write_arm_and_target(ObservationWriter& out) const {
+  out.rod_nodes(rod());
+  out.speed_and_direction(rod().tip_velocity());
+  out.position(target_position_);
+}
+
+void ElasticaArmEnv::write_obstacles(ObservationWriter& out) const {
+  for (const physics::Cylinder& cylinder : obstacles_) out.obstacle(cylinder);
+}
+
+Eigen::Matrix3Xd ElasticaArmEnv::node_positions() const {
+  return rod().sampled_node_positions(rod().n_elements() + 1);
+}
+
+void ElasticaArmEnv::set_target(const Eigen::Vector3d& position) {
+  require(position.allFinite(), "target position must be finite", id_);
+  target_position_ = position;
+}
+
+}  // namespace tendril::envs::elastica

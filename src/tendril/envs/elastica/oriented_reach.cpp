@@ -1,0 +1,77 @@
+#include "tendril/envs/elastica/oriented_reach.hpp"
+
+#include <numbers>
+
+#include "tendril/core/error.hpp"
+#include "tendril/envs/elastica/rewards.hpp"
+
+namespace tendril::envs::elastica {
+
+namespace {
+
+// The box the target is drawn in (SPEC M2, the same as case 1's), m.
+const Eigen::Vector3d kBoxLow(-0.6, 0.3, -0.6);
+const Eigen::Vector3d kBoxHigh(0.6, 0.9, 0.6);
+
+Eigen::Quaterniond canonical(Eigen::Quaterniond q) {
+  q.normalize();
+  if (q.w() < 0.0) q.coeffs() *= -1.0;
+  return q;
+}
+
+physics::ElasticaArmSpec oriented_reach_arm() {
+  physics::ElasticaArmSpec spec = physics::ElasticaArmSpec::tracking();
+  spec.actuation.directions = {true, true, true};
+  return spec;
+}
+
+}  // namespace
+
+std::unique_ptr<Env> OrientedReach::create(const Config& /*params*/) {
+  return std::make_unique<OrientedReach>();
+}
+
+OrientedReach::OrientedReach()
+    : ElasticaArmEnv(Setup{"Elastica/OrientedReach-v0",
+                           oriented_reach_arm(),
+                           kSubstepsPerAction,
+                           kObservationSize,
+                           kNanPenalty,
+                           {}}) {
+  info().set("orientation", 0.0);
+}
+
+Eigen::Quaterniond OrientedReach::target_frame(const Eigen::Quaterniond& initial_tip,
+                                               double theta) {
+  return canonical(Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitY()) * initial_tip);
+}
+
+void OrientedReach::reset_target(Rng& rng) {
+  for (int c = 0; c < 3; ++c) target_position_[c] = rng.uniform(kBoxLow[c], kBoxHigh[c]);
+  target_angle_ = rng.uniform(-0.5 * std::numbers::pi, 0.5 * std::numbers::pi);
+  target_orientation_ = target_frame(rod().tip_quaternion(), target_angle_);
+}
+
+void OrientedReach::set_target_orientation(const Eigen::Quaterniond& orientation) {
+  require(orientation.coeffs().allFinite() && orientation.norm() > 0.0,
+          "target orientation must be a finite, non-zero quaternion", id());
+  target_orientation_ = canonical(orientation);
+}
+
+void OrientedReach::write_observation(ObservationWriter& out) const {
+  out.rod_nodes(rod());
+  out.speed_and_direction(rod().tip_velocity());
+  out.quaternion(rod().tip_quaternion());
+  out.position(target_position_);
+  out.speed_and_direction(Eigen::Vector3d::Zero());
+  out.quaternion(target_orientation_);
+}
+
+double OrientedReach::task_reward(double distance, Info& info) const {
+  const double p = orientation_penalty(rod().tip_quaternion(), target_orientation_);
+  info.set("orientation", p);
+  info.set("is_success", distance <= kBonusRange && p <= 0.05 ? 1.0 : 0.0);
+  return oriented_reach_reward(distance, p);
+}
+
+}  // namespace tendril::envs::elastica

@@ -1,0 +1,49 @@
+#include "tendril/envs/elastica/tracking_3d.hpp"
+
+#include "tendril/envs/elastica/rewards.hpp"
+
+namespace tendril::envs::elastica {
+
+std::unique_ptr<Env> Tracking3D::create(const Config& /*params*/) {
+  return std::make_unique<Tracking3D>();
+}
+
+Tracking3D::Tracking3D()
+    : ElasticaArmEnv(Setup{"Elastica/Tracking3D-v0",
+                           physics::ElasticaArmSpec::tracking(),
+                           kSubstepsPerAction,
+                           kObservationSize,
+                           kNanPenalty,
+                           {}}) {}
+
+void Tracking3D::reset_target(Rng& rng) {
+  motion_.reset(rng);
+  target_position_ = motion_.position();
+}
+
+void Tracking3D::advance_target(Rng& rng) {
+  motion_.advance(rng);
+  target_position_ = motion_.position();
+}
+
+void Tracking3D::set_target(const Eigen::Vector3d& position) {
+  set_target_state(position, motion_.velocity());
+}
+
+void Tracking3D::set_target_state(const Eigen::Vector3d& position,
+                                  const Eigen::Vector3d& velocity) {
+  motion_.set_state(position, velocity);
+  target_position_ = motion_.position();
+}
+
+void Tracking3D::write_observation(ObservationWriter& out) const {
+  write_arm_and_target(out);
+  out.speed_and_direction(motion_.velocity());
+}
+
+double Tracking3D::task_reward(double distance, Info& info) const {
+  info.set("is_success", distance <= kBonusRange ? 1.0 : 0.0);
+  return reach_reward(distance);
+}
+
+}  // namespace tendril::envs::elastica
