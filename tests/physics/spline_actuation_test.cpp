@@ -83,6 +83,29 @@ TEST(SplineActuation, RateLimitMovesControlPointsAtMostPerStep) {
   EXPECT_EQ(muscles.current()[0], 1.0);
 }
 
+// Paired couples: +A(s_i) on element i and −A(s_i) on element i − 1, so they sum to zero.
+TEST(SplineActuation, PairedCouplesAreEqualAndOppositeAcrossJoints) {
+  RodSpec spec;
+  spec.n_elements = 6;
+  Rod rod(spec);
+  SplineActuationSpec actuation;
+  actuation.control_points = 2;
+  actuation.directions = {true, false, false};
+  actuation.paired = true;
+  auto& muscles = rod.add<SplineActuation>(actuation);
+  muscles.set_targets(Eigen::Vector2d(1.0, 0.0));
+  auto profile = [](int i) {
+    const double s = (i + 1) / 6.0;
+    return 75.0 * 13.5 * s * (s - 2.0 / 3.0) * (s - 1.0);
+  };
+  EXPECT_NEAR(muscles.couples()(0, 0), -profile(1), 1e-12);
+  for (int i = 1; i < 5; ++i) {
+    EXPECT_NEAR(muscles.couples()(0, i), profile(i) - profile(i + 1), 1e-12) << "element " << i;
+  }
+  EXPECT_NEAR(muscles.couples()(0, 5), profile(5), 1e-12);  // A(L) = 0: pinned end
+  EXPECT_NEAR(muscles.couples().row(0).sum(), 0.0, 1e-12);
+}
+
 TEST(SplineActuation, SeedControlPointPositions) {
   SplineActuationSpec actuation;
   actuation.control_points = 2;

@@ -44,14 +44,17 @@ void SplineActuation::attach(const RodModel& model, const RodState&) {
   const CubicSplineMap spline(knots, distal);
   weights_ = spline.weights().middleCols(1, cp);  // the pinned end values are zero
   couples_ = Vectors::Zero(3, n);
+  profile_ = Eigen::VectorXd::Zero(n);
 }
 
 void SplineActuation::set_targets(const Eigen::VectorXd& targets) {
-  require(targets.size() == targets_.size(),
-          "expected " + std::to_string(targets_.size()) + " control-point targets, got " +
-              std::to_string(targets.size()),
-          "SplineActuation");
-  require(targets.allFinite(), "control-point targets must be finite", "SplineActuation");
+  // Checked without building messages on the hot path: this runs once per RL step.
+  if (targets.size() != targets_.size()) {
+    throw Error("expected " + std::to_string(targets_.size()) + " control-point targets, got " +
+                    std::to_string(targets.size()),
+                "SplineActuation");
+  }
+  if (!targets.allFinite()) throw Error("control-point targets must be finite", "SplineActuation");
   targets_ = targets.cwiseMax(-1.0).cwiseMin(1.0);
   if (!std::isfinite(spec_.max_change_per_step)) {
     current_ = targets_;
@@ -61,11 +64,21 @@ void SplineActuation::set_targets(const Eigen::VectorXd& targets) {
 
 void SplineActuation::update_couples() {
   const int cp = spec_.control_points;
+  const Eigen::Index n = couples_.cols();
   int block = 0;
   for (int m = 0; m < 3; ++m) {
     if (!spec_.directions[m]) continue;
-    couples_.row(m).noalias() =
-        spec_.max_torque * (weights_ * current_.segment(block * cp, cp)).transpose();
+    profile_.noalias() = weights_ * current_.segment(block * cp, cp);
+    profile_ *= spec_.max_torque;
+    if (spec_.paired) {
+      // Element i gets +A(s_i) and element i − 1 gets −A(s_i) for i ≥ 1: equal and opposite
+      // couples across each joint between elements.
+      couples_.row(m).setZero();
+      couples_.row(m).tail(n - 1) += profile_.tail(n - 1).transpose();
+      couples_.row(m).head(n - 1) -= profile_.tail(n - 1).transpose();
+    } else {
+      couples_.row(m) = profile_.transpose();
+    }
     ++block;
   }
 }

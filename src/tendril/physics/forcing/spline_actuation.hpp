@@ -24,6 +24,11 @@ struct SplineActuationSpec {
   double max_torque = 75.0;                            // α_m, N·m
   // Largest change of a control point per physics step (cases 3–4 use 0.01); ∞: none.
   double max_change_per_step = std::numeric_limits<double>::infinity();
+  // How A(s) enters the elements. false (SPEC M2, the rate-limited cases of the paper's code):
+  // element i's couple is A(s_i), an external distributed couple whose total grows with the
+  // number of elements. true: A(s_i) acts across the joint before element i, +A on element i
+  // and −A on element i − 1 — an internal active bending moment, independent of the mesh.
+  bool paired = false;
 
   int active_directions() const { return directions[0] + directions[1] + directions[2]; }
   int action_size() const { return control_points * active_directions(); }
@@ -51,6 +56,7 @@ class SplineActuation final : public RodPart {
   SplineActuationSpec spec_;
   Eigen::MatrixXd weights_;  // elements × control points (ends pinned at 0, so left out)
   Eigen::VectorXd targets_, current_;
+  Eigen::VectorXd profile_;  // A_m at the elements' distal ends, N·m
   Vectors couples_;
 };
 
