@@ -1,0 +1,23 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tendril/core/env.hpp"
+#include "tendril/rl/on_policy_algorithm.hpp"
+
+namespace tendril::rl {
+
+struct EvaluationResult {
+  std::vector<double> returns;  // undiscounted, one per episode
+  std::vector<int64_t> lengths;
+  double mean_return() const;
+  double std_return() const;
+};
+
+// SB3's evaluate_policy: runs `episodes` full episodes of `env` (which must end them, e.g. by a
+// time limit) with the algorithm's `predict`, the first reset seeded with `seed`.
+EvaluationResult evaluate_policy(OnPolicyAlgorithm& algorithm, Env& env, int episodes,
+                                 bool deterministic, uint64_t seed);
+
+}  // namespace tendril::rl

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "tendril/core/config.hpp"
+#include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/rl/on_policy_algorithm.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
+
+namespace tendril::rl {
+
+// One experiment file (DESIGN.md, "Experiments and runs"), in the spirit of the RL Baselines3
+// Zoo's hyper-parameter files:
+//
+//   algorithm: ppo                 # ppo | trpo
+//   env:
+//     id: Pendulum-v1
+//     params: {g: 10.0}            # the environment's own parameters
+//     n_envs: 4
+//     num_threads: 1               # threads stepping the environments
+//     normalize_observation: false
+//     normalize_reward: true
+//   algo: {...}                    # the algorithm's keys (preset + overrides)
+//   n_timesteps: 500000
+//   seed: 0
+//   eval: {freq: 50000, episodes: 10, deterministic: true}
+//   checkpoint_freq: 100000        # environment steps between checkpoints; 0: none
+//   output: runs/ppo_pendulum      # where new runs go (a timestamp is appended)
+//
+// Every key is checked: unknown keys and wrong types raise Error naming the key path.
+struct Experiment {
+  Config config;  // the whole document, with overrides applied
+  std::string algorithm;
+  VecEnvOptions env;
+  Config algo;
+  int64_t n_timesteps = 0;
+  uint64_t seed = 0;
+  int64_t eval_freq = 0;
+  int eval_episodes = 10;
+  bool eval_deterministic = true;
+  int64_t checkpoint_freq = 0;
+  std::string output;
+
+  // Reads and validates every key, including the algorithm's and the environment's (by
+  // building them once), so a bad file fails before anything is written.
+  static Experiment from_config(Config config);
+};
+
+// The algorithm named in the experiment, on `env`.
+std::unique_ptr<OnPolicyAlgorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env);
+
+}  // namespace tendril::rl

@@ -1,0 +1,287 @@
+#include "tendril/rl/on_policy_algorithm.hpp"
+
+#include <chrono>
+#include <numeric>
+
+#include "tendril/core/error.hpp"
+#include "tendril/envs/wrappers/episode_statistics.hpp"
+#include "tendril/envs/wrappers/normalize_observation.hpp"
+#include "tendril/envs/wrappers/normalize_reward.hpp"
+#include "tendril/nn/inference_sync.hpp"
+#include "tendril/nn/threads.hpp"
+
+namespace tendril::rl {
+
+namespace {
+
+constexpr int64_t kCheckpointFormat = 1;
+constexpr std::size_t kEpisodeWindow = 100;  // SB3's ep_info_buffer
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Rng streams derived from the seed, one per purpose.
+enum Stream : uint64_t { kInit = 1, kActions, kShuffle, kPredict, kEnvSeeds };
+
+double mean(const std::deque<double>& values) {
+  if (values.empty()) return 0.0;
+  return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+
+// Clips Box actions to the space's finite bounds, as SB3 does before stepping.
+void clip_to_space(const Space& space, envs::BatchMatrix& actions) {
+  if (!space.is_box()) return;
+  for (Eigen::Index j = 0; j < actions.cols(); ++j) {
+    const float low = space.low()[j];
+    const float high = space.high()[j];
+    actions.col(j) = actions.col(j).cwiseMax(low).cwiseMin(high);
+  }
+}
+
+std::vector<double> to_vector(const std::deque<double>& values) {
+  return std::vector<double>(values.begin(), values.end());
+}
+
+}  // namespace
+
+OnPolicyAlgorithm::OnPolicyAlgorithm(std::string name, envs::VecEnv& env,
+                                     const OnPolicyConfig& common, uint64_t seed)
+    : name_(std::move(name)),
+      env_(env),
+      common_(common),
+      seed_(seed),
+      buffer_(common.n_steps, env.num_envs(), env.observation_space().size(),
+              env.action_space().is_discrete() ? 1 : env.action_space().size()),
+      action_rng_(seed, kActions),
+      shuffle_rng_(seed, kShuffle),
+      predict_rng_(seed, kPredict),
+      env_seed_rng_(seed, kEnvSeeds) {
+  common_.validate(name_);
+  nn::use_one_torch_thread();
+  torch::manual_seed(seed);
+  common_.policy = common_.policy.with_spaces(env.observation_space(), env.action_space());
+  Rng init_rng(seed, kInit);
+  policy_ = nn::ActorCritic(common_.policy, init_rng);
+  inference_ = nn::make_inference_policy(*policy_);
+}
+
+void OnPolicyAlgorithm::sync_inference() { nn::sync_inference_policy(*policy_, inference_); }
+
+void OnPolicyAlgorithm::record_episodes(const envs::VecStep& step) {
+  for (int i = 0; i < env_.num_envs(); ++i) {
+    if (!step.done(i)) continue;
+    const auto episode_return = step.infos[i].get(envs::EpisodeStatistics::kReturnKey);
+    const auto episode_length = step.infos[i].get(envs::EpisodeStatistics::kLengthKey);
+    if (!episode_return || !episode_length) continue;
+    recent_returns_.push_back(*episode_return);
+    recent_lengths_.push_back(*episode_length);
+    if (recent_returns_.size() > kEpisodeWindow) {
+      recent_returns_.pop_front();
+      recent_lengths_.pop_front();
+    }
+    ++episodes_;
+  }
+}
+
+void OnPolicyAlgorithm::collect_rollout(Progress& progress) {
+  const int n_envs = env_.num_envs();
+  const auto observation_size = env_.observation_space().size();
+  if (needs_reset_) {
+    last_observations_ = env_.reset(env_seed_rng_.next_u64());
+    needs_reset_ = false;
+  }
+  buffer_.clear();
+  truncation_values_.setZero(n_envs);
+  while (!buffer_.full()) {
+    auto start = Clock::now();
+    // Columns of this view are the envs' observations (the row-major batch read in place).
+    const Eigen::Map<const Eigen::MatrixXf> observations(last_observations_.data(),
+                                                         observation_size, n_envs);
+    inference_.act(observations, /*deterministic=*/false, action_rng_, actions_, log_probs_);
+    inference_.value(observations, values_);
+    env_actions_ = actions_.transpose();
+    clip_to_space(env_.action_space(), env_actions_);
+    progress.inference_seconds += seconds_since(start);
+
+    start = Clock::now();
+    const envs::VecStep& step = env_.step(env_actions_);
+    progress.env_seconds += seconds_since(start);
+
+    start = Clock::now();
+    // Bootstrap through time-limit truncation from the episode's final observation.
+    bool any_truncated = false;
+    for (int i = 0; i < n_envs; ++i) any_truncated = any_truncated || step.truncated[i];
+    if (any_truncated) {
+      const Eigen::Map<const Eigen::MatrixXf> finals(step.final_observations.data(),
+                                                     observation_size, n_envs);
+      inference_.value(finals, truncation_values_);
+    }
+    buffer_.add(last_observations_, actions_, step.rewards, values_, log_probs_, step.terminated,
+                step.truncated, truncation_values_);
+    record_episodes(step);
+    last_observations_ = step.observations;
+    num_timesteps_ += n_envs;
+    progress.inference_seconds += seconds_since(start);
+  }
+  const auto start = Clock::now();
+  const Eigen::Map<const Eigen::MatrixXf> observations(last_observations_.data(), observation_size,
+                                                       n_envs);
+  inference_.value(observations, last_values_);
+  buffer_.finish(last_values_, common_.gamma, common_.gae_lambda);
+  progress.inference_seconds += seconds_since(start);
+}
+
+void OnPolicyAlgorithm::learn(int64_t total_timesteps, const Callback& callback) {
+  nn::use_one_torch_thread();
+  while (num_timesteps_ < total_timesteps) {
+    Progress progress;
+    collect_rollout(progress);
+    ++iterations_;
+    const double progress_remaining =
+        1.0 - static_cast<double>(num_timesteps_) / static_cast<double>(total_timesteps);
+    const auto start = Clock::now();
+    progress.train = train(std::max(progress_remaining, 0.0));
+    progress.update_seconds = seconds_since(start);
+
+    progress.timesteps = num_timesteps_;
+    progress.iterations = iterations_;
+    progress.episodes = episodes_;
+    progress.episode_return_mean = mean(recent_returns_);
+    progress.episode_length_mean = mean(recent_lengths_);
+    if (callback && !callback(progress)) break;
+  }
+}
+
+Action OnPolicyAlgorithm::predict(const Observation& observation, bool deterministic) {
+  envs::BatchMatrix batch = observation.transpose();
+  return predict(batch, deterministic).row(0).transpose();
+}
+
+envs::BatchMatrix OnPolicyAlgorithm::predict(const envs::BatchMatrix& observations,
+                                             bool deterministic) {
+  const auto observation_size = env_.observation_space().size();
+  require(observations.cols() == observation_size,
+          "observations have " + std::to_string(observations.cols()) + " components, expected " +
+              std::to_string(observation_size),
+          name_ + "::predict");
+  require(observations.allFinite(), "observations are not finite", name_ + "::predict");
+  const Eigen::Map<const Eigen::MatrixXf> columns(observations.data(), observation_size,
+                                                  observations.rows());
+  Eigen::MatrixXf actions;
+  Eigen::VectorXf log_probs;
+  inference_.act(columns, deterministic, predict_rng_, actions, log_probs);
+  envs::BatchMatrix result = actions.transpose();
+  clip_to_space(env_.action_space(), result);
+  return result;
+}
+
+void OnPolicyAlgorithm::save(const std::filesystem::path& file) const {
+  CheckpointWriter writer;
+  writer.write_int("format", kCheckpointFormat);
+  writer.write_string("algorithm", name_);
+  writer.write_int("spec_observation_size", common_.policy.observation_size);
+  writer.write_int("spec_action_size", common_.policy.action_size);
+  writer.write_int("spec_discrete", common_.policy.discrete ? 1 : 0);
+  torch::serialize::OutputArchive policy_archive;
+  policy_->save(policy_archive);
+  writer.archive().write("policy", policy_archive);
+  save_optimizers(writer);
+  writer.write_rng("rng_actions", action_rng_.state());
+  writer.write_rng("rng_shuffle", shuffle_rng_.state());
+  writer.write_rng("rng_predict", predict_rng_.state());
+  writer.write_rng("rng_env_seeds", env_seed_rng_.state());
+  writer.write_int("num_timesteps", num_timesteps_);
+  writer.write_int("iterations", iterations_);
+  writer.write_int("episodes", episodes_);
+  writer.write_doubles("recent_returns", to_vector(recent_returns_));
+  writer.write_doubles("recent_lengths", to_vector(recent_lengths_));
+  for (int i = 0; i < env_.num_envs(); ++i) {
+    if (auto* normalizer = envs::find_wrapper<envs::NormalizeObservation>(env_.env(i))) {
+      writer.write_doubles("observation_normalizer_" + std::to_string(i),
+                           normalizer->export_statistics());
+    }
+    if (auto* normalizer = envs::find_wrapper<envs::NormalizeReward>(env_.env(i))) {
+      writer.write_doubles("reward_normalizer_" + std::to_string(i),
+                           normalizer->export_statistics());
+    }
+  }
+  writer.commit(file);
+}
+
+void OnPolicyAlgorithm::load(const std::filesystem::path& file) {
+  CheckpointReader reader(file);
+  const std::string where = file.string();
+  require(reader.read_int("format") == kCheckpointFormat, "unsupported checkpoint format", where);
+  const std::string algorithm = reader.read_string("algorithm");
+  require(algorithm == name_, "checkpoint of " + algorithm + ", not " + name_, where);
+  const auto expect = [&](const char* key, int64_t expected) {
+    const int64_t found = reader.read_int(key);
+    require(found == expected,
+            std::string(key) + " is " + std::to_string(found) + " in the checkpoint, " +
+                std::to_string(expected) + " here",
+            where);
+  };
+  expect("spec_observation_size", common_.policy.observation_size);
+  expect("spec_action_size", common_.policy.action_size);
+  expect("spec_discrete", common_.policy.discrete ? 1 : 0);
+
+  // Read everything into new objects first; install them only once all reads succeeded.
+  Rng scratch_rng(0);
+  nn::ActorCritic loaded(common_.policy, scratch_rng);
+  reader.read_nested("policy",
+                     [&](torch::serialize::InputArchive& archive) { loaded->load(archive); });
+  const auto current = policy_->named_parameters();
+  const auto restored = loaded->named_parameters();
+  require(current.size() == restored.size(), "checkpoint has a different network", where);
+  for (const auto& item : current) {
+    const torch::Tensor* other = restored.find(item.key());
+    require(other != nullptr && other->sizes() == item.value().sizes(),
+            "parameter '" + item.key() + "' differs in shape from this network", where);
+  }
+  const std::function<void()> install_optimizers = prepare_load(reader, loaded);
+  Rng::State actions = reader.read_rng("rng_actions");
+  Rng::State shuffle = reader.read_rng("rng_shuffle");
+  Rng::State predict = reader.read_rng("rng_predict");
+  Rng::State env_seeds = reader.read_rng("rng_env_seeds");
+  const int64_t timesteps = reader.read_int("num_timesteps");
+  const int64_t iterations = reader.read_int("iterations");
+  const int64_t episodes = reader.read_int("episodes");
+  const std::vector<double> returns = reader.read_doubles("recent_returns");
+  const std::vector<double> lengths = reader.read_doubles("recent_lengths");
+  require(returns.size() == lengths.size(), "episode records differ in length", where);
+  std::vector<std::function<void()>> install_normalizers;
+  for (int i = 0; i < env_.num_envs(); ++i) {
+    if (auto* normalizer = envs::find_wrapper<envs::NormalizeObservation>(env_.env(i))) {
+      const auto values = reader.read_doubles("observation_normalizer_" + std::to_string(i));
+      const auto statistics =
+          envs::RunningMeanStd::from_array(values, normalizer->statistics().size());
+      install_normalizers.push_back(
+          [normalizer, statistics] { normalizer->set_statistics(statistics); });
+    }
+    if (auto* normalizer = envs::find_wrapper<envs::NormalizeReward>(env_.env(i))) {
+      const auto values = reader.read_doubles("reward_normalizer_" + std::to_string(i));
+      const auto statistics = envs::RunningMeanStd::from_array(values, 1);
+      install_normalizers.push_back(
+          [normalizer, statistics] { normalizer->set_statistics(statistics); });
+    }
+  }
+
+  policy_ = loaded;
+  install_optimizers();
+  sync_inference();
+  action_rng_.set_state(actions);
+  shuffle_rng_.set_state(shuffle);
+  predict_rng_.set_state(predict);
+  env_seed_rng_.set_state(env_seeds);
+  num_timesteps_ = timesteps;
+  iterations_ = iterations;
+  episodes_ = episodes;
+  recent_returns_.assign(returns.begin(), returns.end());
+  recent_lengths_.assign(lengths.begin(), lengths.end());
+  for (const auto& install : install_normalizers) install();
+  needs_reset_ = true;
+}
+
+}  // namespace tendril::rl

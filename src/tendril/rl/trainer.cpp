@@ -1,0 +1,192 @@
+#include "tendril/rl/trainer.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "tendril/core/error.hpp"
+#include "tendril/core/scalar_log.hpp"
+#include "tendril/rl/evaluation.hpp"
+
+namespace tendril::rl {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+fs::path checkpoint_path(const fs::path& run, int64_t steps) {
+  return run / "checkpoints" / ("step_" + std::to_string(steps) + ".pt");
+}
+
+std::string duration_text(double seconds) {
+  const auto total = static_cast<long long>(seconds + 0.5);
+  char text[32];
+  if (total >= 3600) {
+    std::snprintf(text, sizeof text, "%lldh%02lldm", total / 3600, total / 60 % 60);
+  } else {
+    std::snprintf(text, sizeof text, "%lldm%02llds", total / 60, total % 60);
+  }
+  return text;
+}
+
+// Evaluation on a fresh environment with the first training env's frozen observation
+// statistics and raw rewards (SB3's EvalCallback on a VecNormalize'd model).
+EvaluationResult evaluate(const Experiment& experiment, OnPolicyAlgorithm& algorithm,
+                          envs::VecEnv& training, uint64_t seed) {
+  const std::unique_ptr<Env> env = make_evaluation_env(experiment.env, training.env(0));
+  return evaluate_policy(algorithm, *env, experiment.eval_episodes, experiment.eval_deterministic,
+                         seed);
+}
+
+class Run {
+ public:
+  Run(const Experiment& experiment, fs::path directory, const TrainOptions& options, bool resuming)
+      : experiment_(experiment),
+        directory_(std::move(directory)),
+        options_(options),
+        env_(make_vec_env(experiment.env)),
+        algorithm_(make_algorithm(experiment, *env_)),
+        log_(directory_, resuming) {
+    fs::create_directories(directory_ / "checkpoints");
+    const bool eval_exists = fs::exists(directory_ / "eval.csv");
+    eval_file_.open(directory_ / "eval.csv", std::ios::app);
+    if (!eval_exists) eval_file_ << "timesteps,mean_return,std_return,mean_length,episodes\n";
+    if (resuming) algorithm_->load(latest_checkpoint(directory_));
+  }
+
+  TrainResult execute() {
+    const auto start = Clock::now();
+    const int64_t first_step = algorithm_->num_timesteps();
+    last_print_ = start;
+    TrainResult result;
+    result.run_directory = directory_;
+    algorithm_->learn(experiment_.n_timesteps, [&](const Progress& progress) {
+      return after_iteration(progress, start, first_step);
+    });
+    result.timesteps = algorithm_->num_timesteps();
+    result.finished = result.timesteps >= experiment_.n_timesteps;
+    if (result.finished) {
+      const EvaluationResult final_eval = evaluate_now(result.timesteps);
+      result.final_eval_mean = final_eval.mean_return();
+      result.final_eval_std = final_eval.std_return();
+      algorithm_->save(directory_ / "model.pt");
+    }
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    result.steps_per_second = static_cast<double>(result.timesteps - first_step) / result.seconds;
+    if (!options_.quiet) std::fputc('\n', stderr);
+    return result;
+  }
+
+ private:
+  bool after_iteration(const Progress& p, Clock::time_point start, int64_t first_step) {
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    const double fps = static_cast<double>(p.timesteps - first_step) / std::max(elapsed, 1e-9);
+    log_.record("time/total_timesteps", static_cast<double>(p.timesteps));
+    log_.record("time/iterations", static_cast<double>(p.iterations));
+    log_.record("time/fps", fps);
+    log_.record("time/time_elapsed", elapsed);
+    if (p.episodes > 0) {
+      log_.record("rollout/ep_rew_mean", p.episode_return_mean);
+      log_.record("rollout/ep_len_mean", p.episode_length_mean);
+    }
+    for (const auto& [name, value] : p.train) log_.record(name, value);
+    log_.dump(p.timesteps);
+
+    const int64_t previous = p.timesteps - algorithm_->on_policy_config().n_steps * env_->num_envs();
+    auto crossed = [&](int64_t every) { return every > 0 && p.timesteps / every > previous / every; };
+    if (crossed(experiment_.eval_freq) && p.timesteps < experiment_.n_timesteps) {
+      evaluate_now(p.timesteps);
+    }
+    bool keep_going = true;
+    if (crossed(experiment_.checkpoint_freq) && p.timesteps < experiment_.n_timesteps) {
+      algorithm_->save(checkpoint_path(directory_, p.timesteps));
+      algorithm_->restart_environments();
+      if (options_.stop_at && p.timesteps >= *options_.stop_at) keep_going = false;
+    }
+    print_progress(p, fps, keep_going);
+    return keep_going;
+  }
+
+  EvaluationResult evaluate_now(int64_t timesteps) {
+    // A stream of its own per evaluation point, so evaluating never disturbs training.
+    const EvaluationResult eval =
+        evaluate(experiment_, *algorithm_, *env_, experiment_.seed + 1000003 + timesteps);
+    double mean_length = 0.0;
+    for (int64_t length : eval.lengths) mean_length += static_cast<double>(length);
+    mean_length /= static_cast<double>(eval.lengths.size());
+    eval_file_ << timesteps << ',' << eval.mean_return() << ',' << eval.std_return() << ','
+               << mean_length << ',' << eval.returns.size() << '\n';
+    eval_file_.flush();
+    return eval;
+  }
+
+  void print_progress(const Progress& p, double fps, bool keep_going) {
+    if (options_.quiet) return;
+    const auto now = Clock::now();
+    const bool last = p.timesteps >= experiment_.n_timesteps || !keep_going;
+    if (!last && std::chrono::duration<double>(now - last_print_).count() < 1.0) return;
+    last_print_ = now;
+    const double remaining = static_cast<double>(experiment_.n_timesteps - p.timesteps) / fps;
+    std::fprintf(stderr, "\rsteps %lld/%lld (%.1f%%)  %.0f steps/s  ep_rew_mean %s  ETA %s   ",
+                 static_cast<long long>(p.timesteps), static_cast<long long>(experiment_.n_timesteps),
+                 100.0 * static_cast<double>(p.timesteps) / static_cast<double>(experiment_.n_timesteps),
+                 fps, p.episodes > 0 ? std::to_string(p.episode_return_mean).c_str() : "-",
+                 duration_text(std::max(remaining, 0.0)).c_str());
+    std::fflush(stderr);
+  }
+
+  const Experiment& experiment_;
+  fs::path directory_;
+  TrainOptions options_;
+  std::unique_ptr<envs::VecEnv> env_;
+  std::unique_ptr<OnPolicyAlgorithm> algorithm_;
+  ScalarLog log_;
+  std::ofstream eval_file_;
+  Clock::time_point last_print_;
+};
+
+}  // namespace
+
+fs::path latest_checkpoint(const fs::path& run_directory) {
+  const fs::path folder = run_directory / "checkpoints";
+  fs::path newest;
+  int64_t newest_steps = -1;
+  if (fs::is_directory(folder)) {
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("step_", 0) != 0 || entry.path().extension() != ".pt") continue;
+      try {
+        const int64_t steps = std::stoll(name.substr(5, name.size() - 8));
+        if (steps > newest_steps) newest_steps = steps, newest = entry.path();
+      } catch (const std::exception&) {
+        continue;
+      }
+    }
+  }
+  if (newest_steps < 0) throw Error("no checkpoint to resume from", folder.string());
+  return newest;
+}
+
+TrainResult train(const Experiment& experiment, const fs::path& run_directory,
+                  const TrainOptions& options) {
+  if (fs::exists(run_directory) && !fs::is_empty(run_directory)) {
+    throw Error("run directory is not empty; choose another (nothing was overwritten)",
+                run_directory.string());
+  }
+  fs::create_directories(run_directory);
+  std::ofstream(run_directory / "config.yaml") << experiment.config.dump();
+  Run run(experiment, run_directory, options, /*resuming=*/false);
+  return run.execute();
+}
+
+TrainResult resume(const fs::path& run_directory, const TrainOptions& options) {
+  const fs::path config_file = run_directory / "config.yaml";
+  if (!fs::exists(config_file)) throw Error("not a run directory (no config.yaml)", run_directory.string());
+  const Experiment experiment = Experiment::from_config(Config::load_file(config_file));
+  Run run(experiment, run_directory, options, /*resuming=*/true);
+  return run.execute();
+}
+
+}  // namespace tendril::rl

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include "tendril/rl/experiment.hpp"
+
+namespace tendril::rl {
+
+// Runs an experiment into a run directory (DESIGN.md, "Experiments and runs"):
+//   config.yaml       the experiment with overrides applied
+//   progress.csv      one row per iteration, Stable-Baselines3's column names
+//   events.out.tfevents.*   the same scalars for TensorBoard
+//   eval.csv          evaluation returns every `eval.freq` steps and at the end
+//   checkpoints/step_<N>.pt   everything needed to resume, every `checkpoint_freq` steps
+//   model.pt          the final model
+// and a live progress line on standard error.
+struct TrainOptions {
+  // Stop after the first checkpoint at or past this many steps (a run paused on purpose; it
+  // continues with `resume`). Unset: train to n_timesteps.
+  std::optional<int64_t> stop_at;
+  bool quiet = false;  // no progress line
+};
+
+struct TrainResult {
+  std::filesystem::path run_directory;
+  int64_t timesteps = 0;
+  bool finished = false;             // reached n_timesteps
+  double final_eval_mean = 0.0;      // of the last evaluation (when finished)
+  double final_eval_std = 0.0;
+  double seconds = 0.0;
+  double steps_per_second = 0.0;
+};
+
+// Starts a run in `run_directory`, which must not exist or be empty (nothing is overwritten).
+TrainResult train(const Experiment& experiment, const std::filesystem::path& run_directory,
+                  const TrainOptions& options = {});
+
+// Continues the run in `run_directory` from its newest checkpoint, with the experiment saved
+// there. The resumed run computes exactly what the uninterrupted run computes: checkpoints are
+// taken between rollouts and every environment restarts from a seeded reset after each one.
+TrainResult resume(const std::filesystem::path& run_directory, const TrainOptions& options = {});
+
+// The newest checkpoint in a run directory; raises Error if there is none.
+std::filesystem::path latest_checkpoint(const std::filesystem::path& run_directory);
+
+}  // namespace tendril::rl

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "tendril/core/config.hpp"
+#include "tendril/envs/vector/vec_env.hpp"
+
+namespace tendril::rl {
+
+// What SB3's make_vec_env (+ VecNormalize) builds for training: `n_envs` copies of a registered
+// environment, each wrapped as
+//   registry env (with its time limit) → EpisodeStatistics → [NormalizeObservation]
+//   → [NormalizeReward(gamma)]
+// so episode returns are reported raw while the learner sees normalized values.
+struct VecEnvOptions {
+  std::string id;
+  Config params;
+  int n_envs = 1;
+  int num_threads = 1;
+  bool normalize_observation = false;
+  bool normalize_reward = false;
+  double reward_gamma = 0.99;  // discount of the return whose std scales rewards
+};
+
+std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options);
+
+// One environment for evaluation, wrapped as for training but with raw rewards and, when
+// observations are normalized, `training_env`'s statistics frozen (SB3's evaluation of a
+// VecNormalize'd model). Episode returns are in the environment's own units.
+std::unique_ptr<Env> make_evaluation_env(const VecEnvOptions& options, Env& training_env);
+
+}  // namespace tendril::rl

@@ -1,0 +1,67 @@
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "tendril/rl/evaluation.hpp"
+#include "tendril/rl/experiment.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
+
+namespace tendril::rl {
+namespace {
+
+struct Outcome {
+  double mean_return;
+  int64_t timesteps;
+};
+
+// Trains the experiment in configs/<ppo|trpo>/<name> and evaluates the deterministic policy
+// over 20 episodes of a fresh environment (raw rewards).
+Outcome train_from_config(const std::string& name) {
+  const Experiment experiment =
+      Experiment::from_config(Config::load_file(std::string(TENDRIL_CONFIG_DIR) + "/" + name));
+  auto env = make_vec_env(experiment.env);
+  auto algorithm = make_algorithm(experiment, *env);
+  const auto start = std::chrono::steady_clock::now();
+  double env_seconds = 0, inference_seconds = 0, update_seconds = 0;
+  algorithm->learn(experiment.n_timesteps, [&](const Progress& progress) {
+    env_seconds += progress.env_seconds;
+    inference_seconds += progress.inference_seconds;
+    update_seconds += progress.update_seconds;
+    return true;
+  });
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+      "%s: %lld steps in %.1f s (%.0f steps/s; env %.1f s, inference %.1f s, update %.1f s)\n",
+      name.c_str(), static_cast<long long>(algorithm->num_timesteps()), seconds,
+      static_cast<double>(algorithm->num_timesteps()) / seconds, env_seconds, inference_seconds,
+      update_seconds);
+  const auto evaluation_env = make_evaluation_env(experiment.env, env->env(0));
+  const EvaluationResult result =
+      evaluate_policy(*algorithm, *evaluation_env, 20, true, experiment.seed + 1000);
+  std::printf("%s: evaluation return %.1f ± %.1f\n", name.c_str(), result.mean_return(),
+              result.std_return());
+  return {result.mean_return(), algorithm->num_timesteps()};
+}
+
+TEST(PpoClassicControl, CartPoleReaches475Within100kSteps) {
+  const Outcome outcome = train_from_config("ppo/cartpole.yaml");
+  EXPECT_LE(outcome.timesteps, 100000 + 8 * 32);
+  EXPECT_GE(outcome.mean_return, 475.0);
+}
+
+TEST(PpoClassicControl, PendulumReachesMinus400Within500kSteps) {
+  const Outcome outcome = train_from_config("ppo/pendulum.yaml");
+  EXPECT_LE(outcome.timesteps, 500000 + 4 * 1024);
+  EXPECT_GE(outcome.mean_return, -400.0);
+}
+
+TEST(TrpoClassicControl, PendulumReachesMinus400Within500kSteps) {
+  const Outcome outcome = train_from_config("trpo/pendulum.yaml");
+  EXPECT_LE(outcome.timesteps, 500000 + 4 * 1024);
+  EXPECT_GE(outcome.mean_return, -400.0);
+}
+
+}  // namespace
+}  // namespace tendril::rl

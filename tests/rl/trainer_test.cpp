@@ -1,0 +1,159 @@
+// Runs: the run directory, resume equals the uninterrupted run, bad input leaves runs intact.
+#include "tendril/rl/trainer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::rl {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kExperiment = R"(
+algorithm: ppo
+env:
+  id: Pendulum-v1
+  n_envs: 2
+  normalize_reward: true
+algo:
+  n_steps: 128
+  batch_size: 64
+  n_epochs: 2
+  gamma: 0.9
+n_timesteps: 2048
+seed: 3
+eval: {freq: 1024, episodes: 2}
+checkpoint_freq: 1024
+)";
+
+fs::path fresh(const std::string& name) {
+  const fs::path directory = fs::temp_directory_path() / ("tendril_trainer_" + name);
+  fs::remove_all(directory);
+  return directory;
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// progress.csv without its wall-clock columns.
+std::vector<std::string> deterministic_progress(const fs::path& run) {
+  std::ifstream in(run / "progress.csv");
+  std::string header;
+  std::getline(in, header);
+  std::vector<std::string> names;
+  std::stringstream header_cells(header);
+  for (std::string cell; std::getline(header_cells, cell, ',');) names.push_back(cell);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::stringstream cells(line);
+    std::string kept;
+    std::size_t column = 0;
+    for (std::string cell; std::getline(cells, cell, ','); ++column) {
+      if (names[column] == "time/fps" || names[column] == "time/time_elapsed") continue;
+      kept += names[column] + "=" + cell + ";";
+    }
+    rows.push_back(kept);
+  }
+  return rows;
+}
+
+Experiment experiment() { return Experiment::from_config(Config::parse(kExperiment, "test.yaml")); }
+
+TEST(Trainer, WritesTheRunDirectory) {
+  const fs::path run = fresh("layout");
+  const TrainResult result = train(experiment(), run, {.stop_at = std::nullopt, .quiet = true});
+  EXPECT_TRUE(result.finished);
+  EXPECT_EQ(result.timesteps, 2048);
+  for (const char* file : {"config.yaml", "progress.csv", "eval.csv", "model.pt"}) {
+    EXPECT_TRUE(fs::exists(run / file)) << file;
+  }
+  EXPECT_TRUE(fs::exists(run / "checkpoints" / "step_1024.pt"));
+  const std::string progress = read_text(run / "progress.csv");
+  EXPECT_NE(progress.find("time/total_timesteps"), std::string::npos);
+  EXPECT_NE(progress.find("rollout/ep_rew_mean"), std::string::npos);
+  EXPECT_NE(progress.find("train/approx_kl"), std::string::npos);
+  // Evaluations at 1024 steps and at the end.
+  const std::string evaluations = read_text(run / "eval.csv");
+  EXPECT_EQ(std::count(evaluations.begin(), evaluations.end(), '\n'), 3);
+  bool has_events = false;
+  for (const auto& entry : fs::directory_iterator(run)) {
+    has_events |= entry.path().filename().string().rfind("events.out.tfevents.", 0) == 0;
+  }
+  EXPECT_TRUE(has_events);
+}
+
+TEST(Trainer, ResumedRunEqualsTheUninterruptedRun) {
+  const fs::path whole = fresh("whole"), paused = fresh("paused");
+  const TrainResult reference = train(experiment(), whole, {.stop_at = std::nullopt, .quiet = true});
+  const TrainResult first = train(experiment(), paused, {.stop_at = 1000, .quiet = true});
+  EXPECT_FALSE(first.finished);
+  EXPECT_EQ(first.timesteps, 1024);
+  EXPECT_EQ(latest_checkpoint(paused).filename(), "step_1024.pt");
+  const TrainResult second = resume(paused, {.stop_at = std::nullopt, .quiet = true});
+  EXPECT_TRUE(second.finished);
+  EXPECT_EQ(second.final_eval_mean, reference.final_eval_mean);
+  EXPECT_EQ(deterministic_progress(paused), deterministic_progress(whole));
+  EXPECT_EQ(read_text(paused / "eval.csv"), read_text(whole / "eval.csv"));
+}
+
+TEST(Trainer, ExistingRunIsNeverOverwritten) {
+  const fs::path run = fresh("occupied");
+  fs::create_directories(run);
+  std::ofstream(run / "notes.txt") << "keep me";
+  EXPECT_THROW(train(experiment(), run, {.stop_at = std::nullopt, .quiet = true}), Error);
+  EXPECT_EQ(read_text(run / "notes.txt"), "keep me");
+  EXPECT_EQ(std::distance(fs::directory_iterator(run), fs::directory_iterator()), 1);
+}
+
+TEST(Trainer, CorruptCheckpointIsReportedAndLeftAlone) {
+  const fs::path run = fresh("corrupt");
+  train(experiment(), run, {.stop_at = 1000, .quiet = true});
+  const fs::path checkpoint = latest_checkpoint(run);
+  const std::string bytes = read_text(checkpoint);
+  std::ofstream(checkpoint, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  const std::string truncated = read_text(checkpoint);
+  const std::string progress = read_text(run / "progress.csv");
+  EXPECT_THROW(resume(run, {.stop_at = std::nullopt, .quiet = true}), Error);
+  EXPECT_EQ(read_text(checkpoint), truncated);
+  EXPECT_EQ(read_text(run / "progress.csv"), progress);
+}
+
+std::string error_of(const std::string& yaml) {
+  try {
+    Experiment::from_config(Config::parse(yaml, "bad.yaml"));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(Experiment, BadFilesAreRejectedByName) {
+  const std::string base = "algorithm: ppo\nenv: {id: Pendulum-v1}\nn_timesteps: 100\n";
+  EXPECT_EQ(error_of(base), "accepted");
+  EXPECT_EQ(error_of(base + "n_envs: 4\n"), "bad.yaml: unknown key 'n_envs'");
+  EXPECT_NE(error_of("algorithm: dqn\nenv: {id: Pendulum-v1}\nn_timesteps: 1\n").find("unknown algorithm 'dqn'"),
+            std::string::npos);
+  EXPECT_NE(error_of("algorithm: ppo\nenv: {id: Pendulum-v9}\nn_timesteps: 1\n").find("'Pendulum-v9'"),
+            std::string::npos);
+  EXPECT_NE(error_of(base + "algo: {batch_size: many}\n").find("algo.batch_size"), std::string::npos);
+  EXPECT_NE(error_of(base + "algo: {learning_rat: 0.1}\n").find("algo.learning_rat"),
+            std::string::npos);
+  EXPECT_NE(error_of("algorithm: ppo\nenv: {id: Pendulum-v1, params: {gravity: 3}}\nn_timesteps: 1\n")
+                .find("env.params.gravity"),
+            std::string::npos);
+  EXPECT_NE(error_of("algorithm: ppo\nenv: {id: Pendulum-v1\nn_timesteps: 1\n").find("malformed YAML"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace tendril::rl
