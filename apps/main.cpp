@@ -15,6 +15,14 @@ commands:
   simulate <experiment.yaml> [--set key=value ...] [--out DIR]
       Simulate a Cosserat-rod arm under a spline muscle couple; write its tip trajectory
       (tip.csv) and final shape (nodes.csv) to DIR, and print what happened.
+  train <experiment.yaml> [--set key=value ...] [--out DIR] [--stop-at STEPS] [--quiet]
+  train --resume <run-dir>
+      Train a controller; write the run directory (config, progress.csv, TensorBoard events,
+      eval.csv, checkpoints/, model.pt). --stop-at pauses at the first checkpoint past STEPS.
+  eval <run-dir> [--episodes N] [--deterministic] [--seed S]
+      Evaluate a run's model (model.pt, else its newest checkpoint).
+  list-envs
+      The registered environment ids.
   help
       Show this text.
 )";
@@ -30,6 +38,13 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   try {
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
+#ifdef TENDRIL_WITH_ENVS
+    if (args[0] == "list-envs") return tendril::apps::list_envs_command(rest);
+#endif
+#ifdef TENDRIL_WITH_RL
+    if (args[0] == "train") return tendril::apps::train_command(rest);
+    if (args[0] == "eval") return tendril::apps::eval_command(rest);
+#endif
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", args[0].c_str(), kUsage);
     return 2;
   } catch (const tendril::Error& e) {

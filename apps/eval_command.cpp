@@ -1,0 +1,52 @@
+// `tendril eval`: evaluate a run's model on its environment.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "command_line.hpp"
+#include "commands.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/rl/evaluation.hpp"
+#include "tendril/rl/experiment.hpp"
+#include "tendril/rl/trainer.hpp"
+
+namespace tendril::apps {
+
+int eval_command(const std::vector<std::string>& args) {
+  const CommandLine line = CommandLine::parse(args, {"episodes", "seed"}, {"deterministic"});
+  require(line.positional.size() == 1, "expected one run directory", "command line");
+  const std::filesystem::path run = line.positional.front();
+  require(std::filesystem::exists(run / "config.yaml"), "not a run directory (no config.yaml)",
+          run.string());
+  const rl::Experiment experiment = rl::Experiment::from_config(Config::load_file(run / "config.yaml"));
+  const std::filesystem::path model = std::filesystem::exists(run / "model.pt")
+                                          ? run / "model.pt"
+                                          : rl::latest_checkpoint(run);
+  int episodes = 10;
+  uint64_t seed = 0;
+  try {
+    episodes = std::stoi(line.value("episodes", "10"));
+    seed = std::stoull(line.value("seed", "0"));
+  } catch (const std::exception&) {
+    throw Error("--episodes and --seed expect numbers", "command line");
+  }
+  require(episodes >= 1, "--episodes must be at least 1", "command line");
+
+  const std::unique_ptr<envs::VecEnv> env = rl::make_vec_env(experiment.env);
+  const std::unique_ptr<rl::OnPolicyAlgorithm> algorithm = rl::make_algorithm(experiment, *env);
+  algorithm->load(model);
+  const std::unique_ptr<Env> eval_env = rl::make_evaluation_env(experiment.env, env->env(0));
+  const bool deterministic = line.has("deterministic");
+  const rl::EvaluationResult result =
+      rl::evaluate_policy(*algorithm, *eval_env, episodes, deterministic, seed);
+  std::printf("%s on %s, %d episodes (%s): mean return %.3f +/- %.3f\n", model.string().c_str(),
+              experiment.env.id.c_str(), episodes, deterministic ? "deterministic" : "stochastic",
+              result.mean_return(), result.std_return());
+  for (std::size_t i = 0; i < result.returns.size(); ++i) {
+    std::printf("  episode %2zu: return %10.3f  length %lld\n", i, result.returns[i],
+                static_cast<long long>(result.lengths[i]));
+  }
+  return 0;
+}
+
+}  // namespace tendril::apps
