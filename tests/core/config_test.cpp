@@ -5,19 +5,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/error_message.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril {
 namespace {
 
-std::string message_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::error_message;
 
 TEST(Config, ReadsTypedValuesAndNestedMappings) {
   const Config config = Config::parse(R"(
@@ -44,25 +38,25 @@ steps: 1e6
 TEST(Config, UnknownKeyIsNamedWithItsPath) {
   const Config config = Config::parse("env:\n  id: x\n  n_elemnts: 20\n", "exp.yaml");
   EXPECT_EQ(config.child("env").get<std::string>("id"), "x");
-  EXPECT_EQ(message_of([&] { config.reject_unknown(); }), "exp.yaml: unknown key 'env.n_elemnts'");
+  EXPECT_EQ(error_message([&] { config.reject_unknown(); }), "exp.yaml: unknown key 'env.n_elemnts'");
 }
 
 TEST(Config, WrongTypeNamesKeyAndExpectedType) {
   const Config config = Config::parse("algo:\n  batch_size: many\n  lr: [1]\n", "exp.yaml");
-  EXPECT_EQ(message_of([&] { config.child("algo").get<int>("batch_size"); }),
+  EXPECT_EQ(error_message([&] { config.child("algo").get<int>("batch_size"); }),
             "exp.yaml: algo.batch_size: expected an integer, got 'many'");
-  EXPECT_EQ(message_of([&] { config.child("algo").get<double>("lr"); }),
+  EXPECT_EQ(error_message([&] { config.child("algo").get<double>("lr"); }),
             "exp.yaml: algo.lr: expected a number, got a sequence");
-  EXPECT_EQ(message_of([&] { config.child("algo").get<double>("gamma"); }),
+  EXPECT_EQ(error_message([&] { config.child("algo").get<double>("gamma"); }),
             "exp.yaml: missing required key 'algo.gamma'");
-  EXPECT_EQ(message_of([&] { config.get<double>("algo"); }),
+  EXPECT_EQ(error_message([&] { config.get<double>("algo"); }),
             "exp.yaml: algo: expected a number, got a mapping");
 }
 
 TEST(Config, MalformedYamlReportsLine) {
-  const std::string message = message_of([] { Config::parse("a: 1\nb: [1, 2\n", "bad.yaml"); });
+  const std::string message = error_message([] { Config::parse("a: 1\nb: [1, 2\n", "bad.yaml"); });
   EXPECT_NE(message.find("bad.yaml: malformed YAML at line"), std::string::npos) << message;
-  EXPECT_EQ(message_of([] { Config::parse("- 1\n- 2\n", "list.yaml"); }),
+  EXPECT_EQ(error_message([] { Config::parse("- 1\n- 2\n", "list.yaml"); }),
             "list.yaml: the document must be a mapping, got a sequence");
 }
 
@@ -86,7 +80,7 @@ TEST(Config, DumpRoundTrips) {
 }
 
 TEST(Config, LoadFileReportsMissingFile) {
-  EXPECT_EQ(message_of([] { Config::load_file("/nonexistent/exp.yaml"); }),
+  EXPECT_EQ(error_message([] { Config::load_file("/nonexistent/exp.yaml"); }),
             "/nonexistent/exp.yaml: cannot open config file");
   const auto file = std::filesystem::temp_directory_path() / "tendril_config_test.yaml";
   std::ofstream(file) << "n: 7\n";

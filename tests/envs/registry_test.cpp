@@ -4,6 +4,7 @@
 
 #include <functional>
 
+#include "support/error_message.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/classic_control/pendulum.hpp"
 #include "tendril/envs/wrappers/time_limit.hpp"
@@ -11,14 +12,7 @@
 namespace tendril::envs {
 namespace {
 
-std::string message_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::error_message;
 
 TEST(Registry, ListsTheBuiltinReferenceTasks) {
   EXPECT_EQ(registered_ids(),
@@ -34,7 +28,7 @@ TEST(Registry, ListsTheBuiltinReferenceTasks) {
 }
 
 TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
-  EXPECT_EQ(message_of([] { make("Pendulum-v0"); }),
+  EXPECT_EQ(error_message([] { make("Pendulum-v0"); }),
             "envs::make: unknown environment id 'Pendulum-v0'; registered ids: CartPole-v1, "
             "Elastica/OrientedReach-v0, Elastica/StructuredObstacles-v0, Elastica/Tracking3D-v0, "
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
@@ -43,11 +37,11 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {
   const Config config = Config::parse("env:\n  params: {g: 9.81, gravity: 3}\n", "exp.yaml");
-  EXPECT_EQ(message_of([&] { make("Pendulum-v1", config.child("env").child("params")); }),
+  EXPECT_EQ(error_message([&] { make("Pendulum-v1", config.child("env").child("params")); }),
             "exp.yaml: unknown key 'env.params.gravity', not a parameter of environment "
             "'Pendulum-v1'");
   const Config cart = Config::parse("mass: 2\n", "cart.yaml");
-  EXPECT_EQ(message_of([&] { make("CartPole-v1", cart); }),
+  EXPECT_EQ(error_message([&] { make("CartPole-v1", cart); }),
             "cart.yaml: unknown key 'mass', not a parameter of environment 'CartPole-v1'");
 }
 
@@ -63,7 +57,7 @@ TEST(Registry, MakeAppliesParametersAndTheTimeLimit) {
   EXPECT_NEAR(pendulum.theta_dot(), 1.5 * 2.5 * std::sin(0.5) * 0.05, 1e-12);
   EXPECT_FALSE(env->step(Action::Zero(1)).truncated);
   EXPECT_TRUE(env->step(Action::Zero(1)).truncated);
-  EXPECT_NE(message_of([] {
+  EXPECT_NE(error_message([] {
               make("CartPole-v1", Config::parse("max_episode_steps: 0"));
             }).find("max_episode_steps must be at least 1"),
             std::string::npos);
@@ -75,11 +69,11 @@ TEST(Registry, AddingAnEnvironmentIsOneCall) {
   EXPECT_TRUE(registry.contains("Family/Swing-v2"));
   const auto env = registry.make("Family/Swing-v2");
   EXPECT_NE(dynamic_cast<Pendulum*>(env.get()), nullptr);  // no time limit registered
-  EXPECT_NE(message_of([&] {
+  EXPECT_NE(error_message([&] {
               registry.add({"Family/Swing-v2", &Pendulum::create, {}, ""});
             }).find("already registered"),
             std::string::npos);
-  EXPECT_NE(message_of([&] {
+  EXPECT_NE(error_message([&] {
               registry.add({"Swing", &Pendulum::create, {}, ""});
             }).find("not of the form Name-v<N>"),
             std::string::npos);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "support/error_message.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::rl {
@@ -129,12 +130,9 @@ TEST(Trainer, CorruptCheckpointIsReportedAndLeftAlone) {
 }
 
 std::string error_of(const std::string& yaml) {
-  try {
-    Experiment::from_config(Config::parse(yaml, "bad.yaml"));
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "accepted";
+  const std::string message =
+      testing::error_message([&] { Experiment::from_config(Config::parse(yaml, "bad.yaml")); });
+  return message == "no error" ? "accepted" : message;
 }
 
 TEST(Experiment, BadFilesAreRejectedByName) {
