@@ -106,5 +106,20 @@ TEST(RodStatics, FreeFallIsExact) {
   }
 }
 
+// Element forces reach the nodes half-and-half: a uniform force per element on a free rod
+// accelerates it as a whole, F_total / m_total, exactly.
+TEST(RodStatics, ElementForcesSplitBetweenNodes) {
+  RodSpec spec;
+  spec.n_elements = 4;
+  spec.time_step = 1e-3;
+  Rod rod(spec);
+  auto& loads = rod.add<ElementForces>();
+  loads.forces().colwise() = Eigen::Vector3d(0.0, 0.0, 2.0);
+  ASSERT_TRUE(rod.advance(100));
+  const double mass = rod.model().node_masses.sum();
+  const double expected_speed = 4 * 2.0 / mass * rod.time();
+  for (int j = 0; j <= 4; ++j) EXPECT_NEAR(rod.state().velocities(2, j), expected_speed, 1e-9);
+}
+
 }  // namespace
 }  // namespace tendril::physics

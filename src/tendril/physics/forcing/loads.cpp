@@ -35,6 +35,16 @@ void NodeForces::attach(const RodModel& model, const RodState&) {
 
 void NodeForces::add_loads(const RodModel&, RodState& state) { state.external_forces += forces_; }
 
+void ElementForces::attach(const RodModel& model, const RodState&) {
+  forces_ = Vectors::Zero(3, model.n_elements);
+}
+
+void ElementForces::add_loads(const RodModel& model, RodState& state) {
+  const int n = model.n_elements;
+  state.external_forces.leftCols(n) += 0.5 * forces_;
+  state.external_forces.rightCols(n) += 0.5 * forces_;
+}
+
 void ElementCouples::attach(const RodModel& model, const RodState&) {
   couples_ = Vectors::Zero(3, model.n_elements);
 }

@@ -46,6 +46,20 @@ class NodeForces final : public RodPart {
   Vectors forces_;
 };
 
+// Per-element external forces (lab frame, N), set by the owner between steps; each is shared
+// half-and-half by the element's two nodes (e.g. drag or a load spread over an element).
+class ElementForces final : public RodPart {
+ public:
+  uint32_t stages() const override { return kLoads; }
+  void attach(const RodModel& model, const RodState& state) override;
+  void add_loads(const RodModel& model, RodState& state) override;
+
+  Vectors& forces() { return forces_; }  // 3 × n
+
+ private:
+  Vectors forces_;
+};
+
 // Per-element external couples in the material frame (N·m; components along d1, d2, d3), set
 // by the owner between steps. The soft arm's muscle actuation enters here (the Elastica RL
 // paper: c_m = A_m, m = 1, 2, 3).
