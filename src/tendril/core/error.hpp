@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace tendril {
 
@@ -20,9 +21,11 @@ class Error : public std::runtime_error {
   std::string where_;
 };
 
-// Throws Error(what, where) unless `condition` holds.
-inline void require(bool condition, const std::string& what, const std::string& where = {}) {
-  if (!condition) throw Error(what, where);
+// Throws Error(what, where) unless `condition` holds. Takes views so that a passing check
+// builds no strings; on hot paths, give literals, or `if (!ok) throw Error(...)` when the
+// message is composed.
+inline void require(bool condition, std::string_view what, std::string_view where = {}) {
+  if (!condition) throw Error(std::string(what), std::string(where));
 }
 
 }  // namespace tendril

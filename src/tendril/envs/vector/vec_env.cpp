@@ -101,11 +101,13 @@ const BatchMatrix& VecEnv::reset(std::optional<uint64_t> seed) {
 
 void VecEnv::step_one(int i) {
   Step step = envs_[i]->step(actions_[i]);
-  require(step.observation.size() == result_.observations.cols(),
-          "environment " + std::to_string(i) + " returned " +
-              std::to_string(step.observation.size()) + " observation components, expected " +
-              std::to_string(result_.observations.cols()),
-          kWhere);
+  if (step.observation.size() != result_.observations.cols()) {
+    throw Error("environment " + std::to_string(i) + " returned " +
+                    std::to_string(step.observation.size()) +
+                    " observation components, expected " +
+                    std::to_string(result_.observations.cols()),
+                kWhere);
+  }
   result_.final_observations.row(i) = step.observation.transpose();
   result_.rewards[i] = static_cast<float>(step.reward);
   result_.terminated[i] = step.terminated ? 1 : 0;
@@ -122,11 +124,12 @@ void VecEnv::step_one(int i) {
 
 const VecStep& VecEnv::step(const BatchMatrix& actions) {
   require(ready_, "step called before reset (or after an environment error)", kWhere);
-  require(actions.rows() == num_envs() && actions.cols() == action_space().size(),
-          "actions are " + std::to_string(actions.rows()) + " x " + std::to_string(actions.cols()) +
-              ", expected " + std::to_string(num_envs()) + " x " +
-              std::to_string(action_space().size()) + " (envs x action size)",
-          kWhere);
+  if (actions.rows() != num_envs() || actions.cols() != action_space().size()) {
+    throw Error("actions are " + std::to_string(actions.rows()) + " x " +
+                    std::to_string(actions.cols()) + ", expected " + std::to_string(num_envs()) +
+                    " x " + std::to_string(action_space().size()) + " (envs x action size)",
+                kWhere);
+  }
   for (int i = 0; i < num_envs(); ++i) actions_[i] = actions.row(i).transpose();
   for_each_env([this](int i) { step_one(i); });
   return result_;
