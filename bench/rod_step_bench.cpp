@@ -2,7 +2,7 @@
 //
 //   build/bench/rod_step_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
-// PyElastica's figures (../shared/anchors/README.md, the same rods on this kind of machine)
+// PyElastica's figures (reference measurements of the same rods on this kind of machine)
 // cannot be re-measured here: PyElastica is not packaged for Debian.
 #include <benchmark/benchmark.h>
 

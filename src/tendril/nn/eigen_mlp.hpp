@@ -15,7 +15,7 @@ struct DenseLayer {
 };
 
 // A plain-Eigen copy of an `Mlp` trunk for rollout inference. A LibTorch call costs ~10 µs of
-// overhead whatever the batch; this costs a few matrix products (shared/anchors: 0.6 µs for a
+// overhead whatever the batch; this costs a few matrix products (measured: 0.6 µs for a
 // single observation). Batches are matrices with one column per sample, so a row-major
 // [batch, features] buffer from a vector env is used in place. Scratch matrices are kept
 // between calls: after the first call of a given batch size, `forward` does not allocate.

@@ -21,6 +21,12 @@ BufferTensors::BufferTensors(const RolloutBuffer& buffer) {
   all_.returns = view(buffer.returns().data(), {size});
 }
 
+BufferTensors::Batch BufferTensors::Batch::rows(int64_t begin, int64_t end) const {
+  return {observations.slice(0, begin, end),  actions.slice(0, begin, end),
+          old_log_probs.slice(0, begin, end), old_values.slice(0, begin, end),
+          advantages.slice(0, begin, end),    returns.slice(0, begin, end)};
+}
+
 BufferTensors::Batch BufferTensors::select(const torch::Tensor& index) const {
   return {all_.observations.index_select(0, index),  all_.actions.index_select(0, index),
           all_.old_log_probs.index_select(0, index), all_.old_values.index_select(0, index),

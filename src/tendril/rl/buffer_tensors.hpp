@@ -17,6 +17,9 @@ class BufferTensors {
     torch::Tensor old_values;     // V_θold(s_t) [batch]
     torch::Tensor advantages;     // Â_t [batch]
     torch::Tensor returns;        // Â_t + V_θold(s_t) [batch]
+
+    // Rows [begin, end) of every tensor, as views.
+    Batch rows(int64_t begin, int64_t end) const;
   };
 
   explicit BufferTensors(const RolloutBuffer& buffer);

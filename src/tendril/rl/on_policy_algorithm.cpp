@@ -14,7 +14,7 @@ namespace tendril::rl {
 
 namespace {
 
-constexpr int64_t kCheckpointFormat = 1;
+constexpr int64_t kCheckpointFormat = 2;  // 2: PPO's Adam state as flat moment buffers
 constexpr std::size_t kEpisodeWindow = 100;  // SB3's ep_info_buffer
 
 using Clock = std::chrono::steady_clock;

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "tendril/nn/flat_adam.hpp"
 #include "tendril/rl/on_policy_algorithm.hpp"
 #include "tendril/rl/ppo/ppo_config.hpp"
 
@@ -12,7 +13,8 @@ namespace tendril::rl {
 // Proximal Policy Optimization with the clipped surrogate objective (Schulman et al. 2017,
 // "Proximal Policy Optimization Algorithms"), as Stable-Baselines3 implements it: one Adam
 // optimizer over policy and value parameters, `n_epochs` passes of shuffled minibatches over
-// each rollout.
+// each rollout. The parameters live in one flat buffer (nn::FlatAdam), so gradient clipping and
+// the Adam step cost a few whole-buffer operations per minibatch.
 class Ppo : public OnPolicyAlgorithm {
  public:
   Ppo(envs::VecEnv& env, const PpoConfig& config, uint64_t seed);
@@ -25,10 +27,10 @@ class Ppo : public OnPolicyAlgorithm {
   std::function<void()> prepare_load(CheckpointReader& reader, nn::ActorCritic& policy) override;
 
  private:
-  std::shared_ptr<torch::optim::Adam> make_optimizer(nn::ActorCritic& policy) const;
+  std::shared_ptr<nn::FlatAdam> make_optimizer(nn::ActorCritic& policy) const;
 
   PpoConfig config_;
-  std::shared_ptr<torch::optim::Adam> optimizer_;
+  std::shared_ptr<nn::FlatAdam> optimizer_;
 };
 
 }  // namespace tendril::rl

@@ -1,0 +1,164 @@
+// PPO on Pendulum-v1 with Stable-Baselines3's default hyper-parameters (n_steps 2048, batch 64,
+// 10 epochs, lr 3e-4, 64×64 tanh trunks for policy and value, clip 0.2, gradient norm 0.5):
+// environment steps per second of the whole training loop (collection + updates), with 1 and
+// 8 environments, and where the time goes. Also the bare cost of one minibatch step of the
+// same network in a tight loop (forward, backward, gradient-norm clip, Adam), the bound the
+// update's per-minibatch cost approaches.
+//
+//   build/bench/ppo_pendulum_bench [repeats]      (default 3; medians are reported)
+//
+// SB3's figure (a reference measurement: SB3 2.3 on Debian torch 1.13, one thread) cannot
+// be re-measured here: SB3 is not packaged for Debian.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <vector>
+
+#include "tendril/core/rng.hpp"
+#include "tendril/nn/actor_critic.hpp"
+#include "tendril/nn/flat_adam.hpp"
+#include "tendril/nn/threads.hpp"
+#include "tendril/rl/ppo/ppo.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
+
+namespace tendril::rl {
+namespace {
+
+constexpr double kSb3StepsPerSecond = 2800.0;
+constexpr int64_t kStepsPerRun = 32768;  // 16 rollouts of 1 env, 2 rollouts of 8 envs
+constexpr int64_t kBareMinibatches = 2000;
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct LoopFigures {
+  double wall_seconds = 0.0;
+  double env_seconds = 0.0, inference_seconds = 0.0, update_seconds = 0.0;
+  double minibatches = 0.0;
+  double steps_per_second() const { return static_cast<double>(kStepsPerRun) / wall_seconds; }
+  double update_ms_per_minibatch() const { return 1e3 * update_seconds / minibatches; }
+};
+
+LoopFigures train_once(int n_envs) {
+  VecEnvOptions options;
+  options.id = "Pendulum-v1";
+  options.n_envs = n_envs;
+  auto env = make_vec_env(options);
+  Ppo ppo(*env, PpoConfig::sb3(), /*seed=*/0);
+  LoopFigures figures;
+  const auto start = Clock::now();
+  ppo.learn(kStepsPerRun, [&](const Progress& progress) {
+    figures.env_seconds += progress.env_seconds;
+    figures.inference_seconds += progress.inference_seconds;
+    figures.update_seconds += progress.update_seconds;
+    for (const auto& [name, value] : progress.train) {
+      if (name == "train/n_updates") figures.minibatches += value;
+    }
+    return true;
+  });
+  figures.wall_seconds = seconds_since(start);
+  return figures;
+}
+
+// One minibatch of 64 rows through the SB3-default Pendulum actor-critic: evaluate, a loss of
+// the same shape as PPO's (policy term, value term), backward, clip the gradient norm to 0.5,
+// Adam step — with LibTorch's per-parameter utilities (`flat` false) or over one flat buffer
+// (nn::FlatAdam, as Ppo trains). Returns milliseconds per minibatch.
+double bare_minibatch_ms(bool flat) {
+  nn::ActorCriticSpec spec;
+  spec.observation_size = 3;
+  spec.action_size = 1;
+  Rng init_rng(0);
+  nn::ActorCritic policy(spec, init_rng);
+  torch::optim::Adam torch_adam(policy->parameters(), torch::optim::AdamOptions(3e-4).eps(1e-5));
+  std::unique_ptr<nn::FlatAdam> flat_adam;
+  if (flat)
+    flat_adam = std::make_unique<nn::FlatAdam>(
+        policy->parameters(), nn::FlatAdam::Options{.learning_rate = 3e-4, .epsilon = 1e-5});
+  torch::manual_seed(0);
+  const torch::Tensor observations = torch::randn({64, 3});
+  const torch::Tensor actions = torch::randn({64, 1});
+  const torch::Tensor advantages = torch::randn({64});
+  const torch::Tensor returns = torch::randn({64});
+  const auto step = [&] {
+    const auto evaluation = policy->evaluate(observations, actions);
+    const torch::Tensor loss = -(evaluation.log_prob * advantages).mean() +
+                               0.5 * (returns - evaluation.value).pow(2).mean();
+    if (flat) {
+      flat_adam->zero_grad();
+      loss.backward();
+      flat_adam->parameters().clip_grad_norm(0.5);
+      flat_adam->step();
+    } else {
+      torch_adam.zero_grad();
+      loss.backward();
+      torch::nn::utils::clip_grad_norm_(policy->parameters(), 0.5);
+      torch_adam.step();
+    }
+  };
+  for (int i = 0; i < 100; ++i) step();
+  const auto start = Clock::now();
+  for (int64_t i = 0; i < kBareMinibatches; ++i) step();
+  return 1e3 * seconds_since(start) / static_cast<double>(kBareMinibatches);
+}
+
+void print_loop(int n_envs, const std::vector<LoopFigures>& runs) {
+  std::vector<double> rates, env, inference, update, per_minibatch;
+  for (const auto& run : runs) {
+    rates.push_back(run.steps_per_second());
+    env.push_back(run.env_seconds);
+    inference.push_back(run.inference_seconds);
+    update.push_back(run.update_seconds);
+    per_minibatch.push_back(run.update_ms_per_minibatch());
+  }
+  const auto [slowest, fastest] = std::minmax_element(rates.begin(), rates.end());
+  std::printf("| %d | %.0f | %.0f–%.0f | %.2fx | %.2f | %.2f | %.2f | %.0f | %.3f |\n", n_envs,
+              median(rates), *slowest, *fastest, median(rates) / kSb3StepsPerSecond, median(env),
+              median(inference), median(update), runs.front().minibatches, median(per_minibatch));
+}
+
+int run(int repeats) {
+  nn::use_one_torch_thread();
+  std::printf("PPO, Pendulum-v1, SB3 defaults, %lld env steps per run, median of %d runs\n\n",
+              static_cast<long long>(kStepsPerRun), repeats);
+  std::printf(
+      "| envs | steps/s | range | vs SB3 (%.0f) | env s | inference s | update s | minibatches "
+      "| update ms/minibatch |\n",
+      kSb3StepsPerSecond);
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (int n_envs : {1, 8}) {
+    std::vector<LoopFigures> runs;
+    for (int r = 0; r < repeats; ++r) runs.push_back(train_once(n_envs));
+    print_loop(n_envs, runs);
+  }
+  for (bool flat : {false, true}) {
+    std::vector<double> bare;
+    for (int r = 0; r < repeats; ++r) bare.push_back(bare_minibatch_ms(flat));
+    const auto [lowest, highest] = std::minmax_element(bare.begin(), bare.end());
+    std::printf(
+        "%sBare minibatch step (64 rows: evaluate, loss, backward, clip, Adam), %s: %.3f ms "
+        "(range %.3f–%.3f)\n",
+        flat ? "" : "\n",
+        flat ? "flat buffer, nn::FlatAdam" : "clip_grad_norm_, torch::optim::Adam", median(bare),
+        *lowest, *highest);
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace tendril::rl
+
+int main(int argc, char** argv) {
+  const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
+  return tendril::rl::run(repeats);
+}
