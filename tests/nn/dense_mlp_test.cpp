@@ -1,0 +1,171 @@
+// The hand-written MLP passes and Adam against LibTorch's autograd and torch::optim::Adam.
+#include "tendril/nn/dense_mlp.hpp"
+
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include "support/error_message.hpp"
+#include "tendril/nn/adam.hpp"
+
+namespace tendril::nn {
+namespace {
+
+torch::Tensor to_tensor(const Eigen::MatrixXf& matrix) {
+  // Eigen is column-major: (rows × cols) column-major == (cols × rows) row-major, transposed.
+  return torch::from_blob(const_cast<float*>(matrix.data()), {matrix.cols(), matrix.rows()})
+      .clone()
+      .t();
+}
+
+Eigen::MatrixXf to_matrix(const torch::Tensor& tensor) {
+  const torch::Tensor contiguous = tensor.t().contiguous();
+  Eigen::MatrixXf matrix(tensor.size(0), tensor.size(1));
+  std::copy_n(contiguous.data_ptr<float>(), matrix.size(), matrix.data());
+  return matrix;
+}
+
+struct TorchMirror {
+  std::vector<torch::Tensor> weights, biases;
+};
+
+// The same network as leaf tensors read from the flat vector.
+TorchMirror mirror(const DenseMlp& mlp, const Eigen::VectorXf& parameters) {
+  TorchMirror result;
+  int64_t offset = 0;
+  for (std::size_t layer = 0; layer + 1 < mlp.sizes().size(); ++layer) {
+    const int64_t in = mlp.sizes()[layer];
+    const int64_t out = mlp.sizes()[layer + 1];
+    Eigen::MatrixXf weight = Eigen::Map<const Eigen::MatrixXf>(parameters.data() + offset, out, in);
+    offset += out * in;
+    Eigen::MatrixXf bias = Eigen::Map<const Eigen::MatrixXf>(parameters.data() + offset, out, 1);
+    offset += out;
+    result.weights.push_back(to_tensor(weight).requires_grad_(true));
+    result.biases.push_back(to_tensor(bias).reshape({out}).requires_grad_(true));
+  }
+  return result;
+}
+
+void check_against_autograd(Activation hidden, bool tanh_output) {
+  const DenseMlp mlp({5, 16, 12, 3}, hidden, tanh_output);
+  Rng rng(7);
+  Eigen::VectorXf parameters(mlp.parameter_count());
+  mlp.initialize(parameters, rng);
+  const Eigen::MatrixXf inputs = Eigen::MatrixXf::Random(5, 9);
+  const Eigen::MatrixXf output_gradient = Eigen::MatrixXf::Random(3, 9);
+
+  DenseMlp::Tape tape;
+  mlp.forward(parameters, inputs, tape);
+  Eigen::VectorXf gradient = Eigen::VectorXf::Zero(mlp.parameter_count());
+  Eigen::MatrixXf input_gradient;
+  std::vector<Eigen::MatrixXf> scratch;
+  mlp.backward(parameters, tape, output_gradient, gradient, &input_gradient, scratch);
+
+  TorchMirror net = mirror(mlp, parameters);
+  torch::Tensor x = to_tensor(inputs).t().contiguous().requires_grad_(true);  // batch × in
+  torch::Tensor y = x;
+  for (std::size_t layer = 0; layer < net.weights.size(); ++layer) {
+    y = torch::nn::functional::linear(y, net.weights[layer], net.biases[layer]);
+    const bool last = layer + 1 == net.weights.size();
+    if (!last) y = hidden == Activation::kTanh ? torch::tanh(y) : torch::relu(y);
+    if (last && tanh_output) y = torch::tanh(y);
+  }
+  (y * to_tensor(output_gradient).t()).sum().backward();
+
+  EXPECT_TRUE(tape.output().isApprox(to_matrix(y.detach().t()), 1e-5f));
+  EXPECT_TRUE(input_gradient.isApprox(to_matrix(x.grad().t()), 1e-4f));
+  int64_t offset = 0;
+  for (std::size_t layer = 0; layer < net.weights.size(); ++layer) {
+    const Eigen::MatrixXf expected_weight = to_matrix(net.weights[layer].grad());
+    const auto size = expected_weight.size();
+    const Eigen::Map<const Eigen::MatrixXf> weight_gradient(
+        gradient.data() + offset, expected_weight.rows(), expected_weight.cols());
+    EXPECT_TRUE(weight_gradient.isApprox(expected_weight, 1e-4f)) << "layer " << layer;
+    offset += size;
+    const Eigen::MatrixXf expected_bias = to_matrix(net.biases[layer].grad().reshape({-1, 1}));
+    const Eigen::Map<const Eigen::MatrixXf> bias_gradient(gradient.data() + offset,
+                                                          expected_bias.rows(), 1);
+    EXPECT_TRUE(bias_gradient.isApprox(expected_bias, 1e-4f)) << "layer " << layer;
+    offset += expected_bias.size();
+  }
+  EXPECT_EQ(offset, mlp.parameter_count());
+}
+
+TEST(DenseMlp, ReluPassesMatchAutograd) { check_against_autograd(Activation::kRelu, false); }
+TEST(DenseMlp, TanhPassesMatchAutograd) { check_against_autograd(Activation::kTanh, false); }
+TEST(DenseMlp, TanhOutputPassesMatchAutograd) { check_against_autograd(Activation::kRelu, true); }
+
+TEST(DenseMlp, BackwardAccumulatesIntoTheGradient) {
+  const DenseMlp mlp({2, 4, 1}, Activation::kTanh);
+  Rng rng(1);
+  Eigen::VectorXf parameters(mlp.parameter_count());
+  mlp.initialize(parameters, rng);
+  DenseMlp::Tape tape;
+  mlp.forward(parameters, Eigen::MatrixXf::Random(2, 3), tape);
+  std::vector<Eigen::MatrixXf> scratch;
+  Eigen::VectorXf once = Eigen::VectorXf::Zero(mlp.parameter_count());
+  mlp.backward(parameters, tape, Eigen::MatrixXf::Ones(1, 3), once, nullptr, scratch);
+  Eigen::VectorXf twice = once;
+  mlp.backward(parameters, tape, Eigen::MatrixXf::Ones(1, 3), twice, nullptr, scratch);
+  EXPECT_TRUE(twice.isApprox(2.0f * once));
+}
+
+TEST(DenseMlp, InitialisationIsTorchsDefaultBoundAndSeeded) {
+  const DenseMlp mlp({16, 64, 1}, Activation::kRelu);
+  Eigen::VectorXf a(mlp.parameter_count()), b(mlp.parameter_count());
+  Rng rng_a(3), rng_b(3);
+  mlp.initialize(a, rng_a);
+  mlp.initialize(b, rng_b);
+  EXPECT_EQ(a, b);
+  // First layer: ±1/√16; second layer: ±1/√64.
+  EXPECT_LE(a.head(64 * 17).cwiseAbs().maxCoeff(), 0.25f);
+  EXPECT_GT(a.head(64 * 17).cwiseAbs().maxCoeff(), 0.24f);
+  EXPECT_LE(a.tail(65).cwiseAbs().maxCoeff(), 0.125f);
+}
+
+TEST(DenseMlp, RejectsDegenerateShapes) {
+  EXPECT_NE(
+      testing::error_message([] { DenseMlp({3}, Activation::kRelu); }).find("input and an output"),
+      std::string::npos);
+  EXPECT_NE(testing::error_message([] {
+              DenseMlp({3, 0, 1}, Activation::kRelu);
+            }).find("positive"),
+            std::string::npos);
+}
+
+TEST(Adam, MatchesTorchAdam) {
+  torch::manual_seed(0);
+  torch::Tensor reference = torch::randn({10}).requires_grad_(true);
+  Eigen::VectorXf parameters(10);
+  std::copy_n(reference.data_ptr<float>(), 10, parameters.data());
+  torch::optim::Adam torch_adam({reference}, torch::optim::AdamOptions(3e-3).eps(1e-5));
+  Adam adam(10, {3e-3, 0.9, 0.999, 1e-5});
+  for (int step = 0; step < 20; ++step) {
+    const torch::Tensor g = torch::randn({10});
+    torch_adam.zero_grad();
+    reference.mutable_grad() = g.clone();
+    torch_adam.step();
+    Eigen::VectorXf gradient(10);
+    std::copy_n(g.data_ptr<float>(), 10, gradient.data());
+    adam.step(parameters, gradient);
+  }
+  for (int i = 0; i < 10; ++i) EXPECT_NEAR(parameters[i], reference[i].item<float>(), 1e-6f) << i;
+  EXPECT_EQ(adam.steps(), 20);
+}
+
+TEST(Adam, RestoredStateContinuesIdentically) {
+  Adam a(4, {}), b(4, {});
+  Eigen::VectorXf pa = Eigen::VectorXf::Ones(4), pb;
+  a.step(pa, Eigen::VectorXf::Constant(4, 0.5f));
+  pb = pa;
+  b.set_state(a.steps(), a.first_moment(), a.second_moment());
+  a.step(pa, Eigen::VectorXf::Constant(4, -0.25f));
+  b.step(pb, Eigen::VectorXf::Constant(4, -0.25f));
+  EXPECT_EQ(pa, pb);
+  EXPECT_NE(testing::error_message([&] {
+              b.set_state(1, Eigen::VectorXf(3), Eigen::VectorXf(3));
+            }).find("expected 4"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace tendril::nn
