@@ -43,7 +43,8 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args,
 }
 
 bool CommandLine::has(const std::string& flag) const {
-  return std::any_of(options.begin(), options.end(), [&](const auto& o) { return o.first == flag; });
+  return std::any_of(options.begin(), options.end(),
+                     [&](const auto& o) { return o.first == flag; });
 }
 
 std::string CommandLine::value(const std::string& flag, const std::string& fallback) const {

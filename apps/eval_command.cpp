@@ -18,10 +18,10 @@ int eval_command(const std::vector<std::string>& args) {
   const std::filesystem::path run = line.positional.front();
   require(std::filesystem::exists(run / "config.yaml"), "not a run directory (no config.yaml)",
           run.string());
-  const rl::Experiment experiment = rl::Experiment::from_config(Config::load_file(run / "config.yaml"));
-  const std::filesystem::path model = std::filesystem::exists(run / "model.pt")
-                                          ? run / "model.pt"
-                                          : rl::latest_checkpoint(run);
+  const rl::Experiment experiment =
+      rl::Experiment::from_config(Config::load_file(run / "config.yaml"));
+  const std::filesystem::path model =
+      std::filesystem::exists(run / "model.pt") ? run / "model.pt" : rl::latest_checkpoint(run);
   int episodes = 10;
   uint64_t seed = 0;
   try {
@@ -33,7 +33,7 @@ int eval_command(const std::vector<std::string>& args) {
   require(episodes >= 1, "--episodes must be at least 1", "command line");
 
   const std::unique_ptr<envs::VecEnv> env = rl::make_vec_env(experiment.env);
-  const std::unique_ptr<rl::OnPolicyAlgorithm> algorithm = rl::make_algorithm(experiment, *env);
+  const std::unique_ptr<rl::Algorithm> algorithm = rl::make_algorithm(experiment, *env);
   algorithm->load(model);
   const std::unique_ptr<Env> eval_env = rl::make_evaluation_env(experiment.env, env->env(0));
   const bool deterministic = line.has("deterministic");

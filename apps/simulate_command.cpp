@@ -50,7 +50,8 @@ Eigen::VectorXd actuation_from(const Config& actuation, physics::SplineActuation
     const std::string where = actuation.source() + ": " + actuation.path() + "." + names[m];
     require(count < 0 || static_cast<int>(values.size()) == count,
             "every direction needs the same number of control points", where);
-    for (double v : values) require(v >= -1.0 && v <= 1.0, "control points must lie in [-1, 1]", where);
+    for (double v : values)
+      require(v >= -1.0 && v <= 1.0, "control points must lie in [-1, 1]", where);
     count = static_cast<int>(values.size());
     targets.insert(targets.end(), values.begin(), values.end());
   }
@@ -100,12 +101,14 @@ int simulate_command(const std::vector<std::string>& args) {
   std::ofstream tip_file(directory / "tip.csv");
   tip_file << "time,tip_x,tip_y,tip_z,tip_speed,kinetic_energy,shear_stretch_energy,"
               "bend_twist_energy,contacts\n";
-  const int steps_per_record = std::max(1, static_cast<int>(std::lround(record_interval / spec.time_step)));
+  const int steps_per_record =
+      std::max(1, static_cast<int>(std::lround(record_interval / spec.time_step)));
   const int records = static_cast<int>(std::ceil(duration / (steps_per_record * spec.time_step)));
-  std::printf("tendril simulate: %d-element Elastica arm, dt %.2g s, %.3g s simulated, %zu active "
-              "muscle directions\n",
-              spec.n_elements, spec.time_step, duration,
-              static_cast<size_t>(spec.actuation.active_directions()));
+  std::printf(
+      "tendril simulate: %d-element Elastica arm, dt %.2g s, %.3g s simulated, %zu active "
+      "muscle directions\n",
+      spec.n_elements, spec.time_step, duration,
+      static_cast<size_t>(spec.actuation.active_directions()));
   std::printf("%9s %10s %10s %10s %11s %12s\n", "time [s]", "tip x [m]", "tip y [m]", "tip z [m]",
               "speed [m/s]", "energy [J]");
 
@@ -115,8 +118,8 @@ int simulate_command(const std::vector<std::string>& args) {
     const physics::RodEnergies energy = arm.rod.energies();
     const Eigen::Vector3d tip = arm.rod.tip_position();
     const double speed = arm.rod.tip_velocity().norm();
-    tip_file << arm.rod.time() << ',' << tip.x() << ',' << tip.y() << ',' << tip.z() << ','
-             << speed << ',' << energy.translational_kinetic + energy.rotational_kinetic << ','
+    tip_file << arm.rod.time() << ',' << tip.x() << ',' << tip.y() << ',' << tip.z() << ',' << speed
+             << ',' << energy.translational_kinetic + energy.rotational_kinetic << ','
              << energy.shear_stretch << ',' << energy.bend_twist << ','
              << (arm.contact ? arm.contact->contacts() : 0) << '\n';
     if (print) {
@@ -128,7 +131,8 @@ int simulate_command(const std::vector<std::string>& args) {
   for (int r = 1; r <= records; ++r) {
     const auto start = std::chrono::steady_clock::now();
     const bool finite = arm.rod.advance(steps_per_record);
-    stepping_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stepping_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     steps += steps_per_record;
     if (!finite) {
       std::printf("the rod's state became non-finite at t = %.4f s; stopping\n", arm.rod.time());

@@ -56,8 +56,8 @@ int train_command(const std::vector<std::string>& args) {
     return 0;
   }
   const rl::Experiment experiment = rl::Experiment::from_config(line.load_config());
-  const std::filesystem::path run =
-      line.has("out") ? std::filesystem::path(line.value("out", "")) : new_run_directory(experiment.output);
+  const std::filesystem::path run = line.has("out") ? std::filesystem::path(line.value("out", ""))
+                                                    : new_run_directory(experiment.output);
   std::printf("training %s on %s (%d envs) for %lld steps, seed %llu -> %s\n",
               experiment.algorithm.c_str(), experiment.env.id.c_str(), experiment.env.n_envs,
               static_cast<long long>(experiment.n_timesteps),

@@ -91,16 +91,20 @@ void DenseMlp::backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, con
   if (tanh_output_)
     scale_by_derivative(Activation::kTanh, tape.outputs[layers - 1], scratch[layers - 1]);
   const float* data = parameters.data();
-  float* gradient = parameter_gradient.data();
+  float* gradient = parameter_gradient.size() == 0 ? nullptr : parameter_gradient.data();
+  require(gradient == nullptr || parameter_gradient.size() == parameter_count_,
+          "parameter gradient has the wrong size", "nn::DenseMlp::backward");
   for (std::size_t layer = layers; layer-- > 0;) {
     const int64_t in = sizes_[layer];
     const int64_t out = sizes_[layer + 1];
     const Eigen::MatrixXf& x = layer == 0 ? tape.input : tape.outputs[layer - 1];
     const Eigen::MatrixXf& delta = scratch[layer];
-    Eigen::Map<Eigen::MatrixXf> weight_gradient(gradient + offsets_[layer], out, in);
-    Eigen::Map<Eigen::VectorXf> bias_gradient(gradient + offsets_[layer] + out * in, out);
-    weight_gradient.noalias() += delta * x.transpose();
-    bias_gradient += delta.rowwise().sum();
+    if (gradient != nullptr) {
+      Eigen::Map<Eigen::MatrixXf> weight_gradient(gradient + offsets_[layer], out, in);
+      Eigen::Map<Eigen::VectorXf> bias_gradient(gradient + offsets_[layer] + out * in, out);
+      weight_gradient.noalias() += delta * x.transpose();
+      bias_gradient += delta.rowwise().sum();
+    }
     const ConstMatrixMap weight(data + offsets_[layer], out, in);
     if (layer > 0) {
       Eigen::MatrixXf& previous = scratch[layer - 1];

@@ -47,8 +47,9 @@ class DenseMlp {
                const Eigen::Ref<const Eigen::MatrixXf>& inputs, Tape& tape) const;
 
   // Back-propagates `output_gradient` (∂L/∂output, output_size × batch) through the pass
-  // recorded in `tape`: adds ∂L/∂parameters to `parameter_gradient` and, when given, writes
-  // ∂L/∂inputs to `input_gradient`. `scratch` holds intermediate gradients between calls.
+  // recorded in `tape`: adds ∂L/∂parameters to `parameter_gradient` (skipped when it is empty,
+  // for a pass that only needs ∂L/∂inputs) and, when given, writes ∂L/∂inputs to
+  // `input_gradient`. `scratch` holds intermediate gradients between calls.
   void backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, const Tape& tape,
                 const Eigen::Ref<const Eigen::MatrixXf>& output_gradient,
                 Eigen::Ref<Eigen::VectorXf> parameter_gradient, Eigen::MatrixXf* input_gradient,

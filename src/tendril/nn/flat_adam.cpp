@@ -1,8 +1,8 @@
 #include "tendril/nn/flat_adam.hpp"
 
 #include <cmath>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "tendril/core/error.hpp"
 

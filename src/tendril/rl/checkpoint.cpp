@@ -1,36 +1,12 @@
 #include "tendril/rl/checkpoint.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstring>
 #include <sstream>
 
+#include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::rl {
-
-namespace {
-
-void write_all(int fd, const std::string& bytes, const std::string& where) {
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw Error(std::string("cannot write checkpoint: ") + std::strerror(errno), where);
-    written += static_cast<std::size_t>(n);
-  }
-}
-
-void sync_directory(const std::filesystem::path& directory) {
-  const int fd = ::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;  // durability of the rename is best-effort where directories can't be opened
-  ::fsync(fd);
-  ::close(fd);
-}
-
-}  // namespace
 
 void CheckpointWriter::write_int(const std::string& key, int64_t value) {
   archive_.write(key, torch::tensor({value}, torch::kLong));
@@ -48,6 +24,12 @@ void CheckpointWriter::write_doubles(const std::string& key, const std::vector<d
   archive_.write(key, torch::tensor(values, torch::kDouble));
 }
 
+void CheckpointWriter::write_floats(const std::string& key, const Eigen::VectorXf& values) {
+  archive_.write(
+      key,
+      torch::from_blob(const_cast<float*>(values.data()), {values.size()}, torch::kFloat).clone());
+}
+
 void CheckpointWriter::write_rng(const std::string& key, const Rng::State& state) {
   std::vector<int64_t> words;
   for (uint64_t word : state.words) {
@@ -61,35 +43,10 @@ void CheckpointWriter::write_rng(const std::string& key, const Rng::State& state
 }
 
 void CheckpointWriter::commit(const std::filesystem::path& file) {
-  const std::string where = file.string();
   std::ostringstream stream;
   archive_.save_to(stream);
   const std::string bytes = std::move(stream).str();
-
-  const std::filesystem::path temporary =
-      file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    throw Error(std::string("cannot create checkpoint file: ") + std::strerror(errno), where);
-  }
-  try {
-    write_all(fd, bytes, where);
-    if (::fsync(fd) != 0) {
-      throw Error(std::string("cannot flush checkpoint: ") + std::strerror(errno), where);
-    }
-  } catch (...) {
-    ::close(fd);
-    std::filesystem::remove(temporary);
-    throw;
-  }
-  ::close(fd);
-  std::error_code error;
-  std::filesystem::rename(temporary, file, error);
-  if (error) {
-    std::filesystem::remove(temporary);
-    throw Error("cannot move checkpoint into place: " + error.message(), where);
-  }
-  sync_directory(file.parent_path());
+  write_file_atomically(file, bytes, "checkpoint");
 }
 
 CheckpointReader::CheckpointReader(const std::filesystem::path& file) : file_(file) {
@@ -153,6 +110,13 @@ std::vector<double> CheckpointReader::read_doubles(const std::string& key) {
   const torch::Tensor tensor = read_tensor(key, torch::kDouble);
   const double* data = tensor.data_ptr<double>();
   return std::vector<double>(data, data + tensor.numel());
+}
+
+Eigen::VectorXf CheckpointReader::read_floats(const std::string& key, int64_t size) {
+  const torch::Tensor tensor = read_tensor(key, torch::kFloat, size);
+  Eigen::VectorXf values(tensor.numel());
+  std::copy_n(tensor.data_ptr<float>(), tensor.numel(), values.data());
+  return values;
 }
 
 Rng::State CheckpointReader::read_rng(const std::string& key) {

@@ -2,6 +2,7 @@
 
 #include <torch/torch.h>
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -19,6 +20,7 @@ class CheckpointWriter {
   void write_double(const std::string& key, double value);
   void write_string(const std::string& key, const std::string& value);
   void write_doubles(const std::string& key, const std::vector<double>& values);
+  void write_floats(const std::string& key, const Eigen::VectorXf& values);
   void write_rng(const std::string& key, const Rng::State& state);
   torch::serialize::OutputArchive& archive() { return archive_; }
 
@@ -41,6 +43,8 @@ class CheckpointReader {
   double read_double(const std::string& key);
   std::string read_string(const std::string& key);
   std::vector<double> read_doubles(const std::string& key);
+  // Raises Error unless the entry holds exactly `size` floats.
+  Eigen::VectorXf read_floats(const std::string& key, int64_t size);
   Rng::State read_rng(const std::string& key);
   bool contains(const std::string& key);
 

@@ -20,8 +20,8 @@ double EvaluationResult::std_return() const {
   return std::sqrt(sum / static_cast<double>(returns.size()));
 }
 
-EvaluationResult evaluate_policy(OnPolicyAlgorithm& algorithm, Env& env, int episodes,
-                                 bool deterministic, uint64_t seed) {
+EvaluationResult evaluate_policy(Algorithm& algorithm, Env& env, int episodes, bool deterministic,
+                                 uint64_t seed) {
   require(episodes >= 1, "episodes must be at least 1", "rl::evaluate_policy");
   EvaluationResult result;
   for (int episode = 0; episode < episodes; ++episode) {

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "tendril/core/env.hpp"
-#include "tendril/rl/on_policy_algorithm.hpp"
+#include "tendril/rl/algorithm.hpp"
 
 namespace tendril::rl {
 
@@ -17,7 +17,7 @@ struct EvaluationResult {
 
 // SB3's evaluate_policy: runs `episodes` full episodes of `env` (which must end them, e.g. by a
 // time limit) with the algorithm's `predict`, the first reset seeded with `seed`.
-EvaluationResult evaluate_policy(OnPolicyAlgorithm& algorithm, Env& env, int episodes,
-                                 bool deterministic, uint64_t seed);
+EvaluationResult evaluate_policy(Algorithm& algorithm, Env& env, int episodes, bool deterministic,
+                                 uint64_t seed);
 
 }  // namespace tendril::rl

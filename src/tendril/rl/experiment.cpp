@@ -1,7 +1,13 @@
 #include "tendril/rl/experiment.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "tendril/core/error.hpp"
+#include "tendril/rl/dqn/dqn.hpp"
 #include "tendril/rl/ppo/ppo.hpp"
+#include "tendril/rl/sac/sac.hpp"
+#include "tendril/rl/td3/td3.hpp"
 #include "tendril/rl/trpo/trpo.hpp"
 
 namespace tendril::rl {
@@ -18,9 +24,11 @@ Experiment Experiment::from_config(Config config) {
   Experiment e;
   e.config = config;
   e.algorithm = config.get<std::string>("algorithm");
-  if (e.algorithm != "ppo" && e.algorithm != "trpo") {
-    throw Error("unknown algorithm '" + e.algorithm + "' (expected ppo or trpo)",
-                key(config, "algorithm"));
+  const std::vector<std::string> known{"ppo", "trpo", "sac", "td3", "ddpg", "dqn"};
+  if (std::find(known.begin(), known.end(), e.algorithm) == known.end()) {
+    throw Error(
+        "unknown algorithm '" + e.algorithm + "' (expected ppo, trpo, sac, td3, ddpg or dqn)",
+        key(config, "algorithm"));
   }
   const Config env = config.child("env");
   e.env.id = env.get<std::string>("id");
@@ -43,27 +51,42 @@ Experiment Experiment::from_config(Config config) {
   require(e.eval_episodes >= 1, "must be at least 1", key(eval, "episodes"));
   e.checkpoint_freq = config.get_or<int64_t>("checkpoint_freq", 0);
   require(e.checkpoint_freq >= 0, "must be non-negative", key(config, "checkpoint_freq"));
+  e.save_replay_buffer = config.get_or<bool>("save_replay_buffer", false);
   e.output = config.get_or<std::string>("output", "runs/" + e.algorithm);
 
   // Build the environment and the algorithm's configuration once: their keys are checked
   // before anything is written (the VecEnv reward discount follows the algorithm's γ).
   if (e.algorithm == "ppo") {
-    const PpoConfig ppo = PpoConfig::from_config(e.algo);
-    e.env.reward_gamma = ppo.common.gamma;
+    e.env.reward_gamma = PpoConfig::from_config(e.algo).common.gamma;
+  } else if (e.algorithm == "trpo") {
+    e.env.reward_gamma = TrpoConfig::from_config(e.algo).common.gamma;
+  } else if (e.algorithm == "sac") {
+    e.env.reward_gamma = SacConfig::from_config(e.algo).common.gamma;
+  } else if (e.algorithm == "td3" || e.algorithm == "ddpg") {
+    e.env.reward_gamma = Td3Config::from_config(e.algo, e.algorithm == "ddpg").common.gamma;
   } else {
-    const TrpoConfig trpo = TrpoConfig::from_config(e.algo);
-    e.env.reward_gamma = trpo.common.gamma;
+    e.env.reward_gamma = DqnConfig::from_config(e.algo).common.gamma;
   }
   make_vec_env(VecEnvOptions{e.env.id, e.env.params, 1, 1, false, false, 0.99});
   config.reject_unknown();
   return e;
 }
 
-std::unique_ptr<OnPolicyAlgorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env) {
-  if (experiment.algorithm == "ppo") {
-    return std::make_unique<Ppo>(env, PpoConfig::from_config(experiment.algo), experiment.seed);
+std::unique_ptr<Algorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env) {
+  const std::string& name = experiment.algorithm;
+  const uint64_t seed = experiment.seed;
+  if (name == "ppo")
+    return std::make_unique<Ppo>(env, PpoConfig::from_config(experiment.algo), seed);
+  if (name == "trpo") {
+    return std::make_unique<Trpo>(env, TrpoConfig::from_config(experiment.algo), seed);
   }
-  return std::make_unique<Trpo>(env, TrpoConfig::from_config(experiment.algo), experiment.seed);
+  if (name == "sac")
+    return std::make_unique<Sac>(env, SacConfig::from_config(experiment.algo), seed);
+  if (name == "td3" || name == "ddpg") {
+    return std::make_unique<Td3>(env, Td3Config::from_config(experiment.algo, name == "ddpg"),
+                                 seed);
+  }
+  return std::make_unique<Dqn>(env, DqnConfig::from_config(experiment.algo), seed);
 }
 
 }  // namespace tendril::rl

@@ -7,7 +7,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/envs/vector/vec_env.hpp"
-#include "tendril/rl/on_policy_algorithm.hpp"
+#include "tendril/rl/algorithm.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
 namespace tendril::rl {
@@ -15,7 +15,7 @@ namespace tendril::rl {
 // One experiment file (DESIGN.md, "Experiments and runs"), in the spirit of the RL Baselines3
 // Zoo's hyper-parameter files:
 //
-//   algorithm: ppo                 # ppo | trpo
+//   algorithm: ppo                 # ppo | trpo | sac | td3 | ddpg | dqn
 //   env:
 //     id: Pendulum-v1
 //     params: {g: 10.0}            # the environment's own parameters
@@ -28,6 +28,7 @@ namespace tendril::rl {
 //   seed: 0
 //   eval: {freq: 50000, episodes: 10, deterministic: true}
 //   checkpoint_freq: 100000        # environment steps between checkpoints; 0: none
+//   save_replay_buffer: false      # off-policy: keep the replay buffer with the checkpoint
 //   output: runs/ppo_pendulum      # where new runs go (a timestamp is appended)
 //
 // Every key is checked: unknown keys and wrong types raise Error naming the key path.
@@ -42,6 +43,7 @@ struct Experiment {
   int eval_episodes = 10;
   bool eval_deterministic = true;
   int64_t checkpoint_freq = 0;
+  bool save_replay_buffer = false;
   std::string output;
 
   // Reads and validates every key, including the algorithm's and the environment's (by
@@ -50,6 +52,6 @@ struct Experiment {
 };
 
 // The algorithm named in the experiment, on `env`.
-std::unique_ptr<OnPolicyAlgorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env);
+std::unique_ptr<Algorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env);
 
 }  // namespace tendril::rl

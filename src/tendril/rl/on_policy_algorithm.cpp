@@ -1,21 +1,17 @@
 #include "tendril/rl/on_policy_algorithm.hpp"
 
 #include <chrono>
-#include <numeric>
 
 #include "tendril/core/error.hpp"
-#include "tendril/envs/wrappers/episode_statistics.hpp"
-#include "tendril/envs/wrappers/normalize_observation.hpp"
-#include "tendril/envs/wrappers/normalize_reward.hpp"
 #include "tendril/nn/inference_sync.hpp"
 #include "tendril/nn/threads.hpp"
+#include "tendril/rl/normalizer_state.hpp"
 
 namespace tendril::rl {
 
 namespace {
 
 constexpr int64_t kCheckpointFormat = 2;  // 2: PPO's Adam state as flat moment buffers
-constexpr std::size_t kEpisodeWindow = 100;  // SB3's ep_info_buffer
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
@@ -25,11 +21,6 @@ double seconds_since(Clock::time_point start) {
 // Rng streams derived from the seed, one per purpose.
 enum Stream : uint64_t { kInit = 1, kActions, kShuffle, kPredict, kEnvSeeds };
 
-double mean(const std::deque<double>& values) {
-  if (values.empty()) return 0.0;
-  return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
-}
-
 // Clips Box actions to the space's finite bounds, as SB3 does before stepping.
 void clip_to_space(const Space& space, envs::BatchMatrix& actions) {
   if (!space.is_box()) return;
@@ -38,10 +29,6 @@ void clip_to_space(const Space& space, envs::BatchMatrix& actions) {
     const float high = space.high()[j];
     actions.col(j) = actions.col(j).cwiseMax(low).cwiseMin(high);
   }
-}
-
-std::vector<double> to_vector(const std::deque<double>& values) {
-  return std::vector<double>(values.begin(), values.end());
 }
 
 }  // namespace
@@ -68,22 +55,6 @@ OnPolicyAlgorithm::OnPolicyAlgorithm(std::string name, envs::VecEnv& env,
 }
 
 void OnPolicyAlgorithm::sync_inference() { nn::sync_inference_policy(*policy_, inference_); }
-
-void OnPolicyAlgorithm::record_episodes(const envs::VecStep& step) {
-  for (int i = 0; i < env_.num_envs(); ++i) {
-    if (!step.done(i)) continue;
-    const auto episode_return = step.infos[i].get(envs::EpisodeStatistics::kReturnKey);
-    const auto episode_length = step.infos[i].get(envs::EpisodeStatistics::kLengthKey);
-    if (!episode_return || !episode_length) continue;
-    recent_returns_.push_back(*episode_return);
-    recent_lengths_.push_back(*episode_length);
-    if (recent_returns_.size() > kEpisodeWindow) {
-      recent_returns_.pop_front();
-      recent_lengths_.pop_front();
-    }
-    ++episodes_;
-  }
-}
 
 void OnPolicyAlgorithm::collect_rollout(Progress& progress) {
   const int n_envs = env_.num_envs();
@@ -120,7 +91,7 @@ void OnPolicyAlgorithm::collect_rollout(Progress& progress) {
     }
     buffer_.add(last_observations_, actions_, step.rewards, values_, log_probs_, step.terminated,
                 step.truncated, truncation_values_);
-    record_episodes(step);
+    episodes_.record(step);
     last_observations_ = step.observations;
     num_timesteps_ += n_envs;
     progress.inference_seconds += seconds_since(start);
@@ -147,9 +118,9 @@ void OnPolicyAlgorithm::learn(int64_t total_timesteps, const Callback& callback)
 
     progress.timesteps = num_timesteps_;
     progress.iterations = iterations_;
-    progress.episodes = episodes_;
-    progress.episode_return_mean = mean(recent_returns_);
-    progress.episode_length_mean = mean(recent_lengths_);
+    progress.episodes = episodes_.episodes();
+    progress.episode_return_mean = episodes_.mean_return();
+    progress.episode_length_mean = episodes_.mean_length();
     if (callback && !callback(progress)) break;
   }
 }
@@ -194,19 +165,8 @@ void OnPolicyAlgorithm::save(const std::filesystem::path& file) const {
   writer.write_rng("rng_env_seeds", env_seed_rng_.state());
   writer.write_int("num_timesteps", num_timesteps_);
   writer.write_int("iterations", iterations_);
-  writer.write_int("episodes", episodes_);
-  writer.write_doubles("recent_returns", to_vector(recent_returns_));
-  writer.write_doubles("recent_lengths", to_vector(recent_lengths_));
-  for (int i = 0; i < env_.num_envs(); ++i) {
-    if (auto* normalizer = envs::find_wrapper<envs::NormalizeObservation>(env_.env(i))) {
-      writer.write_doubles("observation_normalizer_" + std::to_string(i),
-                           normalizer->export_statistics());
-    }
-    if (auto* normalizer = envs::find_wrapper<envs::NormalizeReward>(env_.env(i))) {
-      writer.write_doubles("reward_normalizer_" + std::to_string(i),
-                           normalizer->export_statistics());
-    }
-  }
+  episodes_.save(writer);
+  save_normalizers(env_, writer);
   writer.commit(file);
 }
 
@@ -247,26 +207,8 @@ void OnPolicyAlgorithm::load(const std::filesystem::path& file) {
   Rng::State env_seeds = reader.read_rng("rng_env_seeds");
   const int64_t timesteps = reader.read_int("num_timesteps");
   const int64_t iterations = reader.read_int("iterations");
-  const int64_t episodes = reader.read_int("episodes");
-  const std::vector<double> returns = reader.read_doubles("recent_returns");
-  const std::vector<double> lengths = reader.read_doubles("recent_lengths");
-  require(returns.size() == lengths.size(), "episode records differ in length", where);
-  std::vector<std::function<void()>> install_normalizers;
-  for (int i = 0; i < env_.num_envs(); ++i) {
-    if (auto* normalizer = envs::find_wrapper<envs::NormalizeObservation>(env_.env(i))) {
-      const auto values = reader.read_doubles("observation_normalizer_" + std::to_string(i));
-      const auto statistics =
-          envs::RunningMeanStd::from_array(values, normalizer->statistics().size());
-      install_normalizers.push_back(
-          [normalizer, statistics] { normalizer->set_statistics(statistics); });
-    }
-    if (auto* normalizer = envs::find_wrapper<envs::NormalizeReward>(env_.env(i))) {
-      const auto values = reader.read_doubles("reward_normalizer_" + std::to_string(i));
-      const auto statistics = envs::RunningMeanStd::from_array(values, 1);
-      install_normalizers.push_back(
-          [normalizer, statistics] { normalizer->set_statistics(statistics); });
-    }
-  }
+  const std::function<void()> install_episodes = episodes_.prepare_load(reader);
+  const std::function<void()> install_normalizers = prepare_normalizers(env_, reader);
 
   policy_ = loaded;
   install_optimizers();
@@ -277,10 +219,8 @@ void OnPolicyAlgorithm::load(const std::filesystem::path& file) {
   env_seed_rng_.set_state(env_seeds);
   num_timesteps_ = timesteps;
   iterations_ = iterations;
-  episodes_ = episodes;
-  recent_returns_.assign(returns.begin(), returns.end());
-  recent_lengths_.assign(lengths.begin(), lengths.end());
-  for (const auto& install : install_normalizers) install();
+  install_episodes();
+  install_normalizers();
   needs_reset_ = true;
 }
 

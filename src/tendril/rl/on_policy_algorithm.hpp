@@ -14,26 +14,13 @@
 #include "tendril/envs/vector/vec_env.hpp"
 #include "tendril/nn/actor_critic.hpp"
 #include "tendril/nn/inference_policy.hpp"
+#include "tendril/rl/algorithm.hpp"
 #include "tendril/rl/checkpoint.hpp"
+#include "tendril/rl/episode_tracker.hpp"
 #include "tendril/rl/on_policy_config.hpp"
 #include "tendril/rl/rollout_buffer.hpp"
 
 namespace tendril::rl {
-
-// Named scalars of one update, with Stable-Baselines3's logger names ("train/approx_kl", …).
-using TrainStats = std::vector<std::pair<std::string, double>>;
-
-// What `learn` reports after each iteration (rollout + update).
-struct Progress {
-  int64_t timesteps = 0;             // environment steps so far, over all envs
-  int64_t iterations = 0;            // rollouts so far
-  double episode_return_mean = 0.0;  // over the last 100 finished episodes (0 if none)
-  double episode_length_mean = 0.0;
-  int64_t episodes = 0;  // finished episodes so far
-  TrainStats train;
-  // Wall time of this iteration: stepping the environments, policy inference, the update.
-  double env_seconds = 0.0, inference_seconds = 0.0, update_seconds = 0.0;
-};
 
 // The machinery PPO and TRPO share (SB3's OnPolicyAlgorithm): collect `n_steps` steps from each
 // environment with the current policy (Eigen inference copy, batched over envs), compute GAE,
@@ -42,45 +29,30 @@ struct Progress {
 // Randomness: every stream derives from the seed — network initialisation, action sampling,
 // minibatch shuffling, environment seeds, `predict` — so the same seed gives the same run.
 // The VecEnv is borrowed and must outlive the algorithm.
-class OnPolicyAlgorithm {
+class OnPolicyAlgorithm : public Algorithm {
  public:
-  // Returning false from the callback stops `learn` after the current iteration.
-  using Callback = std::function<bool(const Progress&)>;
-
-  virtual ~OnPolicyAlgorithm() = default;
   OnPolicyAlgorithm(const OnPolicyAlgorithm&) = delete;
   OnPolicyAlgorithm& operator=(const OnPolicyAlgorithm&) = delete;
 
-  // Trains until `total_timesteps` environment steps have been taken in all (calls to `learn`
-  // continue the count; linear schedules anneal over `total_timesteps`).
-  void learn(int64_t total_timesteps, const Callback& callback = {});
+  void learn(int64_t total_timesteps, const Callback& callback = {}) override;
 
   // The policy's action for one observation: the mode when `deterministic`, else a sample
   // from a dedicated stream. Box actions are clipped to the action space's finite bounds.
-  Action predict(const Observation& observation, bool deterministic);
+  Action predict(const Observation& observation, bool deterministic) override;
   // The same for a batch (one row per observation, one row per action).
   envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic);
 
-  // Writes everything needed to resume — weights, optimizer state, RNG states, counters,
-  // observation/reward normalizer statistics of the wrapped envs — atomically.
-  void save(const std::filesystem::path& file) const;
-  // Restores a checkpoint of the same algorithm and architecture. A missing, corrupt or
-  // mismatching file raises Error and leaves this object unchanged. The environments restart
-  // from a reset at the next `learn`.
-  void load(const std::filesystem::path& file);
+  void save(const std::filesystem::path& file) const override;
+  void load(const std::filesystem::path& file) override;
+  void restart_environments() override { needs_reset_ = true; }
 
-  // Makes the next rollout start from a seeded reset of every environment, as it does after
-  // `load`. The trainer calls it at each checkpoint so that a run resumed from that checkpoint
-  // and the uninterrupted run are the same computation.
-  void restart_environments() { needs_reset_ = true; }
-
-  int64_t num_timesteps() const { return num_timesteps_; }
+  int64_t num_timesteps() const override { return num_timesteps_; }
   int64_t iterations() const { return iterations_; }
-  const std::string& name() const { return name_; }
+  const std::string& name() const override { return name_; }
   const nn::ActorCritic& policy() const { return policy_; }
   const OnPolicyConfig& on_policy_config() const { return common_; }
   // Returns of the last (up to) 100 finished episodes, oldest first.
-  const std::deque<double>& recent_returns() const { return recent_returns_; }
+  const std::deque<double>& recent_returns() const { return episodes_.recent_returns(); }
 
  protected:
   OnPolicyAlgorithm(std::string name, envs::VecEnv& env, const OnPolicyConfig& common,
@@ -103,7 +75,6 @@ class OnPolicyAlgorithm {
 
  private:
   void collect_rollout(Progress& progress);
-  void record_episodes(const envs::VecStep& step);
 
   std::string name_;
   envs::VecEnv& env_;
@@ -123,8 +94,7 @@ class OnPolicyAlgorithm {
 
   int64_t num_timesteps_ = 0;
   int64_t iterations_ = 0;
-  int64_t episodes_ = 0;
-  std::deque<double> recent_returns_, recent_lengths_;
+  EpisodeTracker episodes_;
 };
 
 }  // namespace tendril::rl

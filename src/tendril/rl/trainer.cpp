@@ -8,6 +8,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/rl/evaluation.hpp"
+#include "tendril/rl/off_policy_algorithm.hpp"
 
 namespace tendril::rl {
 
@@ -18,6 +19,11 @@ using Clock = std::chrono::steady_clock;
 
 fs::path checkpoint_path(const fs::path& run, int64_t steps) {
   return run / "checkpoints" / ("step_" + std::to_string(steps) + ".pt");
+}
+
+// The replay buffer saved with a checkpoint (only the newest checkpoint keeps one).
+fs::path buffer_path(const fs::path& checkpoint) {
+  return fs::path(checkpoint).replace_extension(".buffer");
 }
 
 std::string duration_text(double seconds) {
@@ -33,7 +39,7 @@ std::string duration_text(double seconds) {
 
 // Evaluation on a fresh environment with the first training env's frozen observation
 // statistics and raw rewards (SB3's EvalCallback on a VecNormalize'd model).
-EvaluationResult evaluate(const Experiment& experiment, OnPolicyAlgorithm& algorithm,
+EvaluationResult evaluate(const Experiment& experiment, Algorithm& algorithm,
                           envs::VecEnv& training, uint64_t seed) {
   const std::unique_ptr<Env> env = make_evaluation_env(experiment.env, training.env(0));
   return evaluate_policy(algorithm, *env, experiment.eval_episodes, experiment.eval_deterministic,
@@ -53,7 +59,16 @@ class Run {
     const bool eval_exists = fs::exists(directory_ / "eval.csv");
     eval_file_.open(directory_ / "eval.csv", std::ios::app);
     if (!eval_exists) eval_file_ << "timesteps,mean_return,std_return,mean_length,episodes\n";
-    if (resuming) algorithm_->load(latest_checkpoint(directory_));
+    if (resuming) {
+      const fs::path checkpoint = latest_checkpoint(directory_);
+      algorithm_->load(checkpoint);
+      if (auto* off_policy = dynamic_cast<OffPolicyAlgorithm*>(algorithm_.get());
+          off_policy != nullptr && experiment_.save_replay_buffer) {
+        off_policy->load_replay_buffer(buffer_path(checkpoint));
+        last_buffer_ = buffer_path(checkpoint);
+      }
+    }
+    last_timesteps_ = algorithm_->num_timesteps();
   }
 
   TrainResult execute() {
@@ -94,19 +109,34 @@ class Run {
     for (const auto& [name, value] : p.train) log_.record(name, value);
     log_.dump(p.timesteps);
 
-    const int64_t previous = p.timesteps - algorithm_->on_policy_config().n_steps * env_->num_envs();
-    auto crossed = [&](int64_t every) { return every > 0 && p.timesteps / every > previous / every; };
+    const int64_t previous = last_timesteps_;
+    last_timesteps_ = p.timesteps;
+    auto crossed = [&](int64_t every) {
+      return every > 0 && p.timesteps / every > previous / every;
+    };
     if (crossed(experiment_.eval_freq) && p.timesteps < experiment_.n_timesteps) {
       evaluate_now(p.timesteps);
     }
     bool keep_going = true;
     if (crossed(experiment_.checkpoint_freq) && p.timesteps < experiment_.n_timesteps) {
-      algorithm_->save(checkpoint_path(directory_, p.timesteps));
+      save_checkpoint(p.timesteps);
       algorithm_->restart_environments();
       if (options_.stop_at && p.timesteps >= *options_.stop_at) keep_going = false;
     }
     print_progress(p, fps, keep_going);
     return keep_going;
+  }
+
+  // The replay buffer goes first, so a checkpoint never exists without the buffer it needs;
+  // the previous checkpoint's buffer is then removed (buffers can be large).
+  void save_checkpoint(int64_t timesteps) {
+    const fs::path checkpoint = checkpoint_path(directory_, timesteps);
+    auto* off_policy = dynamic_cast<OffPolicyAlgorithm*>(algorithm_.get());
+    const bool with_buffer = off_policy != nullptr && experiment_.save_replay_buffer;
+    if (with_buffer) off_policy->save_replay_buffer(buffer_path(checkpoint));
+    algorithm_->save(checkpoint);
+    if (with_buffer && !last_buffer_.empty()) fs::remove(last_buffer_);
+    if (with_buffer) last_buffer_ = buffer_path(checkpoint);
   }
 
   EvaluationResult evaluate_now(int64_t timesteps) {
@@ -129,11 +159,12 @@ class Run {
     if (!last && std::chrono::duration<double>(now - last_print_).count() < 1.0) return;
     last_print_ = now;
     const double remaining = static_cast<double>(experiment_.n_timesteps - p.timesteps) / fps;
-    std::fprintf(stderr, "\rsteps %lld/%lld (%.1f%%)  %.0f steps/s  ep_rew_mean %s  ETA %s   ",
-                 static_cast<long long>(p.timesteps), static_cast<long long>(experiment_.n_timesteps),
-                 100.0 * static_cast<double>(p.timesteps) / static_cast<double>(experiment_.n_timesteps),
-                 fps, p.episodes > 0 ? std::to_string(p.episode_return_mean).c_str() : "-",
-                 duration_text(std::max(remaining, 0.0)).c_str());
+    std::fprintf(
+        stderr, "\rsteps %lld/%lld (%.1f%%)  %.0f steps/s  ep_rew_mean %s  ETA %s   ",
+        static_cast<long long>(p.timesteps), static_cast<long long>(experiment_.n_timesteps),
+        100.0 * static_cast<double>(p.timesteps) / static_cast<double>(experiment_.n_timesteps),
+        fps, p.episodes > 0 ? std::to_string(p.episode_return_mean).c_str() : "-",
+        duration_text(std::max(remaining, 0.0)).c_str());
     std::fflush(stderr);
   }
 
@@ -141,10 +172,12 @@ class Run {
   fs::path directory_;
   TrainOptions options_;
   std::unique_ptr<envs::VecEnv> env_;
-  std::unique_ptr<OnPolicyAlgorithm> algorithm_;
+  std::unique_ptr<Algorithm> algorithm_;
   ScalarLog log_;
   std::ofstream eval_file_;
   Clock::time_point last_print_;
+  int64_t last_timesteps_ = 0;  // at the previous progress report
+  fs::path last_buffer_;
 };
 
 }  // namespace
@@ -183,7 +216,8 @@ TrainResult train(const Experiment& experiment, const fs::path& run_directory,
 
 TrainResult resume(const fs::path& run_directory, const TrainOptions& options) {
   const fs::path config_file = run_directory / "config.yaml";
-  if (!fs::exists(config_file)) throw Error("not a run directory (no config.yaml)", run_directory.string());
+  if (!fs::exists(config_file))
+    throw Error("not a run directory (no config.yaml)", run_directory.string());
   const Experiment experiment = Experiment::from_config(Config::load_file(config_file));
   Run run(experiment, run_directory, options, /*resuming=*/true);
   return run.execute();

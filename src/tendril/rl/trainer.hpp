@@ -26,8 +26,8 @@ struct TrainOptions {
 struct TrainResult {
   std::filesystem::path run_directory;
   int64_t timesteps = 0;
-  bool finished = false;             // reached n_timesteps
-  double final_eval_mean = 0.0;      // of the last evaluation (when finished)
+  bool finished = false;         // reached n_timesteps
+  double final_eval_mean = 0.0;  // of the last evaluation (when finished)
   double final_eval_std = 0.0;
   double seconds = 0.0;
   double steps_per_second = 0.0;

@@ -1,0 +1,66 @@
+#include "tendril/core/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <string>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril {
+
+namespace {
+
+void write_all(int fd, std::string_view bytes, std::string_view what, const std::string& where) {
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      throw Error("cannot write " + std::string(what) + ": " + std::strerror(errno), where);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+}
+
+void sync_directory(const std::filesystem::path& directory) {
+  const int fd = ::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;  // durability of the rename is best-effort where directories can't be opened
+  ::fsync(fd);
+  ::close(fd);
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& file, std::string_view bytes,
+                           std::string_view what) {
+  const std::string where = file.string();
+  const std::filesystem::path temporary =
+      file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw Error("cannot create " + std::string(what) + " file: " + std::strerror(errno), where);
+  }
+  try {
+    write_all(fd, bytes, what, where);
+    if (::fsync(fd) != 0) {
+      throw Error("cannot flush " + std::string(what) + ": " + std::strerror(errno), where);
+    }
+  } catch (...) {
+    ::close(fd);
+    std::filesystem::remove(temporary);
+    throw;
+  }
+  ::close(fd);
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) {
+    std::filesystem::remove(temporary);
+    throw Error("cannot move " + std::string(what) + " into place: " + error.message(), where);
+  }
+  sync_directory(file.parent_path());
+}
+
+}  // namespace tendril

@@ -1,0 +1,60 @@
+#include "tendril/rl/episode_tracker.hpp"
+
+#include <numeric>
+#include <vector>
+
+#include "tendril/core/error.hpp"
+#include "tendril/envs/wrappers/episode_statistics.hpp"
+
+namespace tendril::rl {
+
+namespace {
+
+constexpr std::size_t kWindow = 100;  // SB3's ep_info_buffer
+
+double mean(const std::deque<double>& values) {
+  if (values.empty()) return 0.0;
+  return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+
+}  // namespace
+
+void EpisodeTracker::record(const envs::VecStep& step) {
+  for (std::size_t i = 0; i < step.infos.size(); ++i) {
+    if (!step.done(static_cast<int>(i))) continue;
+    const auto episode_return = step.infos[i].get(envs::EpisodeStatistics::kReturnKey);
+    const auto episode_length = step.infos[i].get(envs::EpisodeStatistics::kLengthKey);
+    if (!episode_return || !episode_length) continue;
+    returns_.push_back(*episode_return);
+    lengths_.push_back(*episode_length);
+    if (returns_.size() > kWindow) {
+      returns_.pop_front();
+      lengths_.pop_front();
+    }
+    ++episodes_;
+  }
+}
+
+double EpisodeTracker::mean_return() const { return mean(returns_); }
+double EpisodeTracker::mean_length() const { return mean(lengths_); }
+
+void EpisodeTracker::save(CheckpointWriter& writer) const {
+  writer.write_int("episodes", episodes_);
+  writer.write_doubles("recent_returns", std::vector<double>(returns_.begin(), returns_.end()));
+  writer.write_doubles("recent_lengths", std::vector<double>(lengths_.begin(), lengths_.end()));
+}
+
+std::function<void()> EpisodeTracker::prepare_load(CheckpointReader& reader) {
+  const int64_t episodes = reader.read_int("episodes");
+  const std::vector<double> returns = reader.read_doubles("recent_returns");
+  const std::vector<double> lengths = reader.read_doubles("recent_lengths");
+  require(returns.size() == lengths.size() && returns.size() <= kWindow,
+          "episode records are inconsistent", reader.file().string());
+  return [this, episodes, returns, lengths] {
+    episodes_ = episodes;
+    returns_.assign(returns.begin(), returns.end());
+    lengths_.assign(lengths.begin(), lengths.end());
+  };
+}
+
+}  // namespace tendril::rl

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+
+#include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/rl/checkpoint.hpp"
+
+namespace tendril::rl {
+
+// Returns and lengths of the last 100 finished episodes (SB3's ep_info_buffer), read from the
+// EpisodeStatistics wrapper's info of each finished env, and the count of finished episodes.
+class EpisodeTracker {
+ public:
+  void record(const envs::VecStep& step);
+
+  int64_t episodes() const { return episodes_; }
+  double mean_return() const;  // 0 when none finished yet
+  double mean_length() const;
+  // Oldest first.
+  const std::deque<double>& recent_returns() const { return returns_; }
+
+  void save(CheckpointWriter& writer) const;
+  // Reads the saved state; the returned action installs it (run once every read succeeded).
+  std::function<void()> prepare_load(CheckpointReader& reader);
+
+ private:
+  int64_t episodes_ = 0;
+  std::deque<double> returns_, lengths_;
+};
+
+}  // namespace tendril::rl

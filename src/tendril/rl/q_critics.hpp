@@ -1,0 +1,70 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "tendril/core/rng.hpp"
+#include "tendril/nn/adam.hpp"
+#include "tendril/nn/dense_mlp.hpp"
+#include "tendril/rl/adam_checkpoint.hpp"
+#include "tendril/rl/checkpoint.hpp"
+
+namespace tendril::rl {
+
+// The state-action critics of SAC, TD3 and DDPG: `count` networks Q_i(s, a) over the
+// concatenated input [s; a], all their parameters in one vector with one Adam optimizer (SB3's
+// ContinuousCritic), and a Polyak-averaged target copy.
+class QCritics {
+ public:
+  QCritics() = default;
+  QCritics(int count, int64_t observation_size, int64_t action_size,
+           const std::vector<int64_t>& hidden, nn::Activation activation, double learning_rate,
+           Rng& init_rng);
+
+  int count() const { return static_cast<int>(networks_.size()); }
+
+  // Q_i of each column of `inputs` ((observation + action) × batch) with the online or the
+  // target parameters, as rows of `values()` (count × batch).
+  void forward(const Eigen::MatrixXf& inputs, bool target);
+  const Eigen::MatrixXf& values() const { return values_; }
+
+  // Back-propagates ∂L/∂Q (count × batch) through the last `forward`: adds ∂L/∂parameters to
+  // `gradient()` when `parameters` is true, and writes Σ_i ∂L/∂inputs to `input_gradient` when
+  // given (for the actor's update through the critics).
+  void backward(const Eigen::MatrixXf& value_gradient, bool parameters,
+                Eigen::MatrixXf* input_gradient);
+
+  // One Adam step from `gradient()`, which is then zeroed.
+  void step(double learning_rate);
+  // target ← (1 − τ) target + τ online.
+  void update_target(double tau) {
+    target_ = (1.0f - static_cast<float>(tau)) * target_ + static_cast<float>(tau) * parameters_;
+  }
+
+  void save(CheckpointWriter& writer, const std::string& prefix) const;
+  // Returns the action that installs the read state.
+  std::function<void()> prepare_load(CheckpointReader& reader, const std::string& prefix);
+
+  const Eigen::VectorXf& parameters() const { return parameters_; }
+
+ private:
+  Eigen::Ref<const Eigen::VectorXf> slice(const Eigen::VectorXf& all, int i) const {
+    return all.segment(offsets_[i], networks_[i].parameter_count());
+  }
+
+  std::vector<nn::DenseMlp> networks_;
+  std::vector<int64_t> offsets_;
+  Eigen::VectorXf parameters_, target_, gradient_, no_gradient_;
+  nn::Adam optimizer_;
+  std::vector<nn::DenseMlp::Tape> tapes_;
+  std::vector<std::vector<Eigen::MatrixXf>> scratch_;
+  Eigen::MatrixXf values_, input_gradient_;
+  bool last_forward_target_ = false;
+};
+
+// [observations; actions] column by column into `inputs` (resized as needed).
+void concatenate_rows(const Eigen::Ref<const Eigen::MatrixXf>& top,
+                      const Eigen::Ref<const Eigen::MatrixXf>& bottom, Eigen::MatrixXf& inputs);
+
+}  // namespace tendril::rl

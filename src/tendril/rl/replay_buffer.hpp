@@ -1,0 +1,60 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <filesystem>
+
+#include "tendril/core/rng.hpp"
+
+namespace tendril::rl {
+
+// The transitions an off-policy algorithm learns from, in a ring of fixed capacity (the oldest
+// is overwritten first), stored as float columns: observation, action (as the algorithm sees
+// it: scaled to [−1, 1], or the index of a discrete action), reward, next observation and
+// whether the episode terminated there. A time-limit truncation is not a termination: its
+// transition keeps `terminated` = 0 and the episode's final observation as next observation,
+// so its target bootstraps from the value there (SB3's handle_timeout_termination).
+//
+// Memory is reserved up front but touched only as transitions arrive; sampling fills a
+// caller-owned batch and allocates nothing once the batch has its size.
+class ReplayBuffer {
+ public:
+  struct Batch {
+    Eigen::MatrixXf observations;       // observation_size × batch
+    Eigen::MatrixXf actions;            // action_size × batch
+    Eigen::VectorXf rewards;            // batch
+    Eigen::MatrixXf next_observations;  // observation_size × batch
+    Eigen::VectorXf terminated;         // 1 where the episode ended by termination
+  };
+
+  ReplayBuffer(int64_t capacity, int64_t observation_size, int64_t action_size);
+
+  void add(const Eigen::Ref<const Eigen::VectorXf>& observation,
+           const Eigen::Ref<const Eigen::VectorXf>& action, float reward,
+           const Eigen::Ref<const Eigen::VectorXf>& next_observation, bool terminated);
+
+  // `batch_size` transitions drawn uniformly with replacement (SB3's sampling). The buffer must
+  // not be empty.
+  void sample(int64_t batch_size, Rng& rng, Batch& batch) const;
+
+  int64_t size() const { return size_; }
+  int64_t capacity() const { return capacity_; }
+  int64_t observation_size() const { return observations_.rows(); }
+  int64_t action_size() const { return actions_.rows(); }
+
+  // Writes the stored transitions and the ring position atomically, with a CRC-32C over the
+  // contents. `load` reads a file written by `save` for the same capacity and sizes; a missing,
+  // truncated, corrupt or mismatching file raises Error naming the file and leaves this buffer
+  // unchanged.
+  void save(const std::filesystem::path& file) const;
+  void load(const std::filesystem::path& file);
+
+ private:
+  int64_t capacity_ = 0;
+  int64_t size_ = 0;
+  int64_t position_ = 0;  // where the next transition goes
+  Eigen::MatrixXf observations_, actions_, next_observations_;
+  Eigen::VectorXf rewards_, terminated_;
+};
+
+}  // namespace tendril::rl

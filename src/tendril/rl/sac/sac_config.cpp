@@ -1,0 +1,72 @@
+#include "tendril/rl/sac/sac_config.hpp"
+
+#include <string>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::rl {
+
+SacConfig SacConfig::sb3() { return SacConfig{}; }
+
+SacConfig SacConfig::sb2() {
+  SacConfig config;
+  config.common.buffer_size = 50'000;
+  config.common.batch_size = 64;
+  config.common.net_arch = {64, 64};
+  return config;
+}
+
+SacConfig SacConfig::from_config(const Config& algo) {
+  SacConfig config = read_preset(algo, {"sb3", "sb2"}, "SAC") == "sb2" ? sb2() : sb3();
+  config.common.read(algo);
+  const std::string where = algo.source() + ": " + (algo.path().empty() ? "" : algo.path() + ".");
+  if (algo.has("ent_coef")) {
+    const std::string text = algo.get<std::string>("ent_coef");
+    if (text.rfind("auto", 0) == 0) {
+      config.auto_entropy = true;
+      if (text.size() > 5 && text[4] == '_') {
+        try {
+          config.ent_coef = std::stod(text.substr(5));
+        } catch (const std::exception&) {
+          throw Error("expected auto, auto_<initial value> or a number, got '" + text + "'",
+                      where + "ent_coef");
+        }
+      } else if (text != "auto") {
+        throw Error("expected auto, auto_<initial value> or a number, got '" + text + "'",
+                    where + "ent_coef");
+      }
+    } else {
+      config.auto_entropy = false;
+      config.ent_coef = algo.get<double>("ent_coef");
+    }
+  }
+  if (algo.has("target_entropy")) {
+    if (algo.get<std::string>("target_entropy") == "auto") {
+      config.target_entropy.reset();
+    } else {
+      config.target_entropy = algo.get<double>("target_entropy");
+    }
+  }
+  config.target_update_interval =
+      algo.get_or<int64_t>("target_update_interval", config.target_update_interval);
+  if (algo.has("q_clip")) {
+    if (algo.get<std::string>("q_clip") == "none") {
+      config.q_clip.reset();
+    } else {
+      config.q_clip = algo.get<double>("q_clip");
+    }
+  }
+  algo.reject_unknown();
+  config.validate();
+  return config;
+}
+
+void SacConfig::validate() const {
+  const std::string where = "SAC config";
+  common.validate(where);
+  require(ent_coef > 0.0, "ent_coef must be positive", where);
+  require(target_update_interval >= 1, "target_update_interval must be at least 1", where);
+  require(!q_clip || *q_clip > 0.0, "q_clip must be positive", where);
+}
+
+}  // namespace tendril::rl

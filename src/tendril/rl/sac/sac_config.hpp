@@ -1,0 +1,36 @@
+#pragma once
+
+#include <optional>
+
+#include "tendril/core/config.hpp"
+#include "tendril/rl/off_policy_config.hpp"
+
+namespace tendril::rl {
+
+// SAC hyper-parameters. Defaults are Stable-Baselines3's SAC (stable_baselines3/sac/sac.py):
+// buffer 1e6, 100 random warm-up steps, batch 256, τ 0.005, γ 0.99, one gradient step per env
+// step, Adam lr 3e-4, 256×256 ReLU networks, entropy coefficient tuned automatically from 1
+// towards the target entropy −dim(A), targets updated every step.
+struct SacConfig {
+  OffPolicyConfig common;
+  bool auto_entropy = true;              // learn α (Haarnoja et al. 2018b, eq. 18)
+  double ent_coef = 1.0;                 // the fixed α, or the initial α when learned
+  std::optional<double> target_entropy;  // unset: −dim(A)
+  int64_t target_update_interval = 1;    // gradient steps between target updates
+  // Clip the critics' regression targets to ±q_clip (a guard against divergence in long runs
+  // with large rewards); unset: no clipping.
+  std::optional<double> q_clip;
+
+  static SacConfig sb3();
+  // stable-baselines v2's SAC defaults (the Elastica paper's runs): buffer 50 000, batch 64,
+  // 64×64 ReLU networks, otherwise as SB3.
+  static SacConfig sb2();
+  // `preset: sb3 | sb2` and then, over it, the common off-policy keys and
+  //   ent_coef (a number, `auto`, or `auto_<initial>` as SB3), target_entropy (a number or
+  //   `auto`), target_update_interval, q_clip (a number or `none`).
+  static SacConfig from_config(const Config& algo);
+
+  void validate() const;
+};
+
+}  // namespace tendril::rl
