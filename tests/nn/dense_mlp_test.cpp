@@ -35,7 +35,8 @@ TorchMirror mirror(const DenseMlp& mlp, const Eigen::VectorXf& parameters) {
   for (std::size_t layer = 0; layer + 1 < mlp.sizes().size(); ++layer) {
     const int64_t in = mlp.sizes()[layer];
     const int64_t out = mlp.sizes()[layer + 1];
-    Eigen::MatrixXf weight = Eigen::Map<const Eigen::MatrixXf>(parameters.data() + offset, out, in);
+    using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    Eigen::MatrixXf weight = Eigen::Map<const RowMajor>(parameters.data() + offset, out, in);
     offset += out * in;
     Eigen::MatrixXf bias = Eigen::Map<const Eigen::MatrixXf>(parameters.data() + offset, out, 1);
     offset += out;
@@ -77,7 +78,8 @@ void check_against_autograd(Activation hidden, bool tanh_output) {
   for (std::size_t layer = 0; layer < net.weights.size(); ++layer) {
     const Eigen::MatrixXf expected_weight = to_matrix(net.weights[layer].grad());
     const auto size = expected_weight.size();
-    const Eigen::Map<const Eigen::MatrixXf> weight_gradient(
+    using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const Eigen::Map<const RowMajor> weight_gradient(
         gradient.data() + offset, expected_weight.rows(), expected_weight.cols());
     EXPECT_TRUE(weight_gradient.isApprox(expected_weight, 1e-4f)) << "layer " << layer;
     offset += size;

@@ -95,7 +95,8 @@ TEST(Trainer, WritesTheRunDirectory) {
 
 TEST(Trainer, ResumedRunEqualsTheUninterruptedRun) {
   const fs::path whole = fresh("whole"), paused = fresh("paused");
-  const TrainResult reference = train(experiment(), whole, {.stop_at = std::nullopt, .quiet = true});
+  const TrainResult reference =
+      train(experiment(), whole, {.stop_at = std::nullopt, .quiet = true});
   const TrainResult first = train(experiment(), paused, {.stop_at = 1000, .quiet = true});
   EXPECT_FALSE(first.finished);
   EXPECT_EQ(first.timesteps, 1024);
@@ -105,6 +106,58 @@ TEST(Trainer, ResumedRunEqualsTheUninterruptedRun) {
   EXPECT_EQ(second.final_eval_mean, reference.final_eval_mean);
   EXPECT_EQ(deterministic_progress(paused), deterministic_progress(whole));
   EXPECT_EQ(read_text(paused / "eval.csv"), read_text(whole / "eval.csv"));
+}
+
+constexpr const char* kOffPolicyExperiment = R"(
+algorithm: sac
+env:
+  id: Pendulum-v1
+  n_envs: 2
+algo:
+  learning_starts: 300
+  batch_size: 32
+  net_arch: [32, 32]
+  log_interval: 250
+n_timesteps: 2000
+seed: 5
+eval: {freq: 1000, episodes: 2}
+checkpoint_freq: 1000
+save_replay_buffer: true
+)";
+
+Experiment off_policy_experiment() {
+  return Experiment::from_config(Config::parse(kOffPolicyExperiment, "sac.yaml"));
+}
+
+TEST(Trainer, ResumedOffPolicyRunWithItsReplayBufferEqualsTheUninterruptedRun) {
+  const fs::path whole = fresh("sac_whole"), paused = fresh("sac_paused");
+  const TrainResult reference =
+      train(off_policy_experiment(), whole, {.stop_at = std::nullopt, .quiet = true});
+  const TrainResult first =
+      train(off_policy_experiment(), paused, {.stop_at = 1000, .quiet = true});
+  EXPECT_EQ(first.timesteps, 1000);
+  EXPECT_TRUE(fs::exists(paused / "checkpoints" / "step_1000.buffer"));
+  const TrainResult second = resume(paused, {.stop_at = std::nullopt, .quiet = true});
+  EXPECT_TRUE(second.finished);
+  EXPECT_EQ(second.final_eval_mean, reference.final_eval_mean);
+  EXPECT_EQ(deterministic_progress(paused), deterministic_progress(whole));
+  EXPECT_EQ(read_text(paused / "eval.csv"), read_text(whole / "eval.csv"));
+  EXPECT_NE(read_text(whole / "progress.csv").find("train/ent_coef"), std::string::npos);
+}
+
+TEST(Trainer, CorruptReplayBufferIsReportedAndLeftAlone) {
+  const fs::path run = fresh("sac_corrupt");
+  train(off_policy_experiment(), run, {.stop_at = 1000, .quiet = true});
+  const fs::path buffer = run / "checkpoints" / "step_1000.buffer";
+  std::string bytes = read_text(buffer);
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x40);
+  std::ofstream(buffer, std::ios::binary | std::ios::trunc) << bytes;
+  const std::string progress = read_text(run / "progress.csv");
+  const std::string message =
+      testing::error_message([&] { resume(run, {.stop_at = std::nullopt, .quiet = true}); });
+  EXPECT_NE(message.find("checksum"), std::string::npos) << message;
+  EXPECT_EQ(read_text(buffer), bytes);
+  EXPECT_EQ(read_text(run / "progress.csv"), progress);
 }
 
 TEST(Trainer, ExistingRunIsNeverOverwritten) {
@@ -139,18 +192,26 @@ TEST(Experiment, BadFilesAreRejectedByName) {
   const std::string base = "algorithm: ppo\nenv: {id: Pendulum-v1}\nn_timesteps: 100\n";
   EXPECT_EQ(error_of(base), "accepted");
   EXPECT_EQ(error_of(base + "n_envs: 4\n"), "bad.yaml: unknown key 'n_envs'");
-  EXPECT_NE(error_of("algorithm: dqn\nenv: {id: Pendulum-v1}\nn_timesteps: 1\n").find("unknown algorithm 'dqn'"),
+  EXPECT_NE(error_of("algorithm: a2c\nenv: {id: Pendulum-v1}\nn_timesteps: 1\n")
+                .find("unknown algorithm 'a2c'"),
             std::string::npos);
-  EXPECT_NE(error_of("algorithm: ppo\nenv: {id: Pendulum-v9}\nn_timesteps: 1\n").find("'Pendulum-v9'"),
+  // An algorithm that cannot act in the environment's action space fails before any run starts.
+  EXPECT_NE(error_of("algorithm: dqn\nenv: {id: Pendulum-v1}\nn_timesteps: 1\n").find("Discrete"),
             std::string::npos);
-  EXPECT_NE(error_of(base + "algo: {batch_size: many}\n").find("algo.batch_size"), std::string::npos);
+  EXPECT_NE(
+      error_of("algorithm: ppo\nenv: {id: Pendulum-v9}\nn_timesteps: 1\n").find("'Pendulum-v9'"),
+      std::string::npos);
+  EXPECT_NE(error_of(base + "algo: {batch_size: many}\n").find("algo.batch_size"),
+            std::string::npos);
   EXPECT_NE(error_of(base + "algo: {learning_rat: 0.1}\n").find("algo.learning_rat"),
             std::string::npos);
-  EXPECT_NE(error_of("algorithm: ppo\nenv: {id: Pendulum-v1, params: {gravity: 3}}\nn_timesteps: 1\n")
-                .find("env.params.gravity"),
-            std::string::npos);
-  EXPECT_NE(error_of("algorithm: ppo\nenv: {id: Pendulum-v1\nn_timesteps: 1\n").find("malformed YAML"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("algorithm: ppo\nenv: {id: Pendulum-v1, params: {gravity: 3}}\nn_timesteps: 1\n")
+          .find("env.params.gravity"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of("algorithm: ppo\nenv: {id: Pendulum-v1\nn_timesteps: 1\n").find("malformed YAML"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -9,7 +9,9 @@ namespace tendril::nn {
 
 namespace {
 
-using ConstMatrixMap = Eigen::Map<const Eigen::MatrixXf>;
+using RowMajorMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using ConstWeightMap = Eigen::Map<const RowMajorMatrix>;
+using WeightMap = Eigen::Map<RowMajorMatrix>;
 using ConstVectorMap = Eigen::Map<const Eigen::VectorXf>;
 
 void activate(Activation activation, Eigen::MatrixXf& values) {
@@ -63,7 +65,7 @@ void DenseMlp::forward(const Eigen::Ref<const Eigen::VectorXf>& parameters,
   for (std::size_t layer = 0; layer + 1 < sizes_.size(); ++layer) {
     const int64_t in = sizes_[layer];
     const int64_t out = sizes_[layer + 1];
-    const ConstMatrixMap weight(data + offsets_[layer], out, in);
+    const ConstWeightMap weight(data + offsets_[layer], out, in);
     const ConstVectorMap bias(data + offsets_[layer] + out * in, out);
     const Eigen::MatrixXf& x = layer == 0 ? tape.input : tape.outputs[layer - 1];
     Eigen::MatrixXf& y = tape.outputs[layer];
@@ -100,12 +102,12 @@ void DenseMlp::backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, con
     const Eigen::MatrixXf& x = layer == 0 ? tape.input : tape.outputs[layer - 1];
     const Eigen::MatrixXf& delta = scratch[layer];
     if (gradient != nullptr) {
-      Eigen::Map<Eigen::MatrixXf> weight_gradient(gradient + offsets_[layer], out, in);
+      WeightMap weight_gradient(gradient + offsets_[layer], out, in);
       Eigen::Map<Eigen::VectorXf> bias_gradient(gradient + offsets_[layer] + out * in, out);
       weight_gradient.noalias() += delta * x.transpose();
       bias_gradient += delta.rowwise().sum();
     }
-    const ConstMatrixMap weight(data + offsets_[layer], out, in);
+    const ConstWeightMap weight(data + offsets_[layer], out, in);
     if (layer > 0) {
       Eigen::MatrixXf& previous = scratch[layer - 1];
       previous.resize(in, delta.cols());

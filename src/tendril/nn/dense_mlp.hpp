@@ -17,7 +17,9 @@ namespace tendril::nn {
 // also makes Adam, Polyak averaging and checkpoints whole-vector operations.
 //
 // Batches are matrices with one column per sample (features × batch). Parameters are laid out
-// layer after layer, each as its weight (out × in, column-major) followed by its bias.
+// layer after layer, each as its weight (out × in, row-major) followed by its bias: the memory
+// layout of a torch::nn::Linear's weight and bias, so a LibTorch module's flat parameter buffer
+// can be read in place.
 class DenseMlp {
  public:
   // What a forward pass keeps for the backward pass: the input and every layer's output.

@@ -37,6 +37,13 @@ class ReplayBuffer {
   // not be empty.
   void sample(int64_t batch_size, Rng& rng, Batch& batch) const;
 
+  // Transition i in storage order (the ring's slot, not its age), for inspection.
+  auto observation(int64_t i) const { return observations_.col(i); }
+  auto action(int64_t i) const { return actions_.col(i); }
+  float reward(int64_t i) const { return rewards_[i]; }
+  auto next_observation(int64_t i) const { return next_observations_.col(i); }
+  bool terminated(int64_t i) const { return terminated_[i] != 0.0f; }
+
   int64_t size() const { return size_; }
   int64_t capacity() const { return capacity_; }
   int64_t observation_size() const { return observations_.rows(); }

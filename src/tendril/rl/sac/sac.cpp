@@ -8,12 +8,7 @@ namespace tendril::rl {
 
 namespace {
 
-constexpr float kLogStdMin = -20.0f;  // SB3's LOG_STD_MIN / LOG_STD_MAX
-constexpr float kLogStdMax = 2.0f;
-constexpr float kSquashEpsilon = 1e-6f;  // inside log(1 − tanh² u + ε), as SB3's TanhBijector
 constexpr uint64_t kInitStream = 100;
-
-const float kHalfLogTwoPi = 0.5f * std::log(2.0f * static_cast<float>(M_PI));
 
 std::vector<int64_t> actor_sizes(int64_t observation_size, const std::vector<int64_t>& hidden,
                                  int64_t action_size) {
@@ -51,23 +46,12 @@ double Sac::entropy_coefficient() const { return std::exp(static_cast<double>(lo
 
 void Sac::sample_policy(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
                         PolicySample& sample) const {
-  const int64_t a = action_size();
-  const Eigen::Index batch = observations.cols();
   actor_.forward(actor_parameters_, observations, sample.tape);
-  const Eigen::MatrixXf& output = sample.tape.output();
-  sample.noise.resize(a, batch);
-  for (Eigen::Index i = 0; i < sample.noise.size(); ++i) {
-    sample.noise.data()[i] = static_cast<float>(rng.normal());
-  }
-  const auto log_std = output.bottomRows(a).array().cwiseMax(kLogStdMin).cwiseMin(kLogStdMax);
-  sample.std = log_std.exp().matrix();
-  const Eigen::ArrayXXf u = output.topRows(a).array() + sample.std.array() * sample.noise.array();
-  sample.actions = u.tanh().matrix();
-  // log π(a|s) = Σ_j [log N(u_j; μ_j, σ_j) − log(1 − tanh²(u_j) + ε)]  (SAC paper, eq. 26)
-  const Eigen::ArrayXXf per_component =
-      -0.5f * sample.noise.array().square() - log_std - kHalfLogTwoPi -
-      (1.0f - sample.actions.array().square() + kSquashEpsilon).log();
-  sample.log_probs = per_component.colwise().sum().transpose().matrix();
+  Eigen::MatrixXf& noise = sample.distribution.noise;
+  noise.resize(action_size(), observations.cols());
+  for (Eigen::Index i = 0; i < noise.size(); ++i)
+    noise.data()[i] = static_cast<float>(rng.normal());
+  sample.distribution.evaluate(sample.tape.output());
 }
 
 void Sac::act(const Eigen::Ref<const Eigen::MatrixXf>& observations, ActMode mode, Rng& rng,
@@ -75,7 +59,7 @@ void Sac::act(const Eigen::Ref<const Eigen::MatrixXf>& observations, ActMode mod
   if (mode != ActMode::kDeterministic) {
     PolicySample sample;
     sample_policy(observations, rng, sample);
-    actions = sample.actions;
+    actions = sample.distribution.actions;
     return;
   }
   actor_.forward(actor_parameters_, observations, act_tape_);
@@ -98,7 +82,9 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
     const auto ent_coef = static_cast<float>(entropy_coefficient());
     if (config_.auto_entropy) {
       const double mean_term =
-          (current_.log_probs.array() + static_cast<float>(target_entropy_)).cast<double>().mean();
+          (current_.distribution.log_probs.array() + static_cast<float>(target_entropy_))
+              .cast<double>()
+              .mean();
       ent_loss_sum += -static_cast<double>(log_ent_coef_[0]) * mean_term;
       ent_coef_optimizer_.set_learning_rate(learning_rate);
       ent_coef_optimizer_.step(log_ent_coef_,
@@ -109,10 +95,10 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
     // Critic targets: y = r + γ (1 − d) (min_i Q̄_i(s', a') − α log π(a'|s')), a' ~ π(·|s')  (eq. 3,
     // 5)
     sample_policy(batch_.next_observations, sample_rng(), next_);
-    concatenate_rows(batch_.next_observations, next_.actions, critic_inputs_);
+    concatenate_rows(batch_.next_observations, next_.distribution.actions, critic_inputs_);
     critics_.forward(critic_inputs_, /*target=*/true);
     Eigen::VectorXf targets = (critics_.values().colwise().minCoeff().transpose().array() -
-                               ent_coef * next_.log_probs.array())
+                               ent_coef * next_.distribution.log_probs.array())
                                   .matrix();
     targets =
         (batch_.rewards.array() + gamma * (1.0f - batch_.terminated.array()) * targets.array())
@@ -132,7 +118,7 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
 
     // Actor step on mean(α log π(a|s) − min_i Q_i(s, a)), a = tanh(μ + σ ε)  (eq. 12), through
     // the just-updated critics.
-    concatenate_rows(batch_.observations, current_.actions, critic_inputs_);
+    concatenate_rows(batch_.observations, current_.distribution.actions, critic_inputs_);
     critics_.forward(critic_inputs_, /*target=*/false);
     const Eigen::MatrixXf& q = critics_.values();
     value_gradient_.setZero(q.rows(), q.cols());
@@ -142,28 +128,12 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
       min_q_sum += q.col(i).minCoeff(&argmin);
       value_gradient_(argmin, i) = -inverse_batch;
     }
-    actor_loss_sum += ent_coef * static_cast<double>(current_.log_probs.mean()) -
+    actor_loss_sum += ent_coef * static_cast<double>(current_.distribution.log_probs.mean()) -
                       min_q_sum / static_cast<double>(batch_size);
     critics_.backward(value_gradient_, /*parameters=*/false, &input_gradient_);
 
-    // ∂/∂u through a = tanh u: the critic's ∂/∂a · (1 − a²), and the squash correction
-    // −log(1 − a² + ε) contributes α · 2a(1 − a²) / (1 − a² + ε). The Gaussian term is
-    // −ε²/2 − log σ with ε fixed, so log σ also gets −α directly.
-    const Eigen::ArrayXXf one_minus_square = 1.0f - current_.actions.array().square();
-    const Eigen::ArrayXXf u_gradient = input_gradient_.bottomRows(a).array() * one_minus_square +
-                                       (ent_coef * inverse_batch) * 2.0f *
-                                           current_.actions.array() * one_minus_square /
-                                           (one_minus_square + kSquashEpsilon);
-    const auto raw_log_std = current_.tape.output().bottomRows(a).array();
-    const auto inside_clamp = raw_log_std >= kLogStdMin && raw_log_std <= kLogStdMax;
-    actor_output_gradient_.resize(2 * a, batch_size);
-    actor_output_gradient_.topRows(a) = u_gradient.matrix();
-    actor_output_gradient_.bottomRows(a) =
-        inside_clamp
-            .select(u_gradient * current_.std.array() * current_.noise.array() -
-                        ent_coef * inverse_batch,
-                    0.0f)
-            .matrix();
+    current_.distribution.head_gradient(current_.tape.output(), input_gradient_.bottomRows(a),
+                                        ent_coef, actor_output_gradient_);
     actor_.backward(actor_parameters_, current_.tape, actor_output_gradient_, actor_gradient_,
                     nullptr, actor_scratch_);
     actor_optimizer_.set_learning_rate(learning_rate);

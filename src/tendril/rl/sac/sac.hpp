@@ -8,6 +8,7 @@
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/q_critics.hpp"
 #include "tendril/rl/sac/sac_config.hpp"
+#include "tendril/rl/sac/squashed_gaussian.hpp"
 
 namespace tendril::rl {
 
@@ -31,13 +32,10 @@ class Sac : public OffPolicyAlgorithm {
   std::function<void()> prepare_load(CheckpointReader& reader) override;
 
  private:
-  // One reparameterised draw a = tanh(μ + σ ε) per column, with its log-likelihood.
+  // One reparameterised draw a = tanh(μ + σ ε) per column, with the actor pass behind it.
   struct PolicySample {
     nn::DenseMlp::Tape tape;
-    Eigen::MatrixXf noise;    // ε, action_size × batch
-    Eigen::MatrixXf std;      // σ
-    Eigen::MatrixXf actions;  // a ∈ (−1, 1)
-    Eigen::VectorXf log_probs;
+    SquashedGaussianSample distribution;
   };
   void sample_policy(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
                      PolicySample& sample) const;

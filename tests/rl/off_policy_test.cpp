@@ -1,0 +1,319 @@
+// SAC, TD3, DDPG and DQN: SB3's identity checks, reproducibility, save/load with and without the
+// replay buffer, timeouts in the buffer, and bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/error_message.hpp"
+#include "tendril/envs/registry.hpp"
+#include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/rl/dqn/dqn.hpp"
+#include "tendril/rl/evaluation.hpp"
+#include "tendril/rl/sac/sac.hpp"
+#include "tendril/rl/td3/td3.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
+
+namespace tendril::rl {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::unique_ptr<envs::VecEnv> vec_env(const std::string& id, const std::string& params,
+                                      int n_envs = 1) {
+  VecEnvOptions options;
+  options.id = id;
+  options.params = Config::parse(params);
+  options.n_envs = n_envs;
+  return make_vec_env(options);
+}
+
+std::unique_ptr<OffPolicyAlgorithm> make(const std::string& algorithm, envs::VecEnv& env,
+                                         const std::string& algo, uint64_t seed) {
+  const Config config = Config::parse(algo);
+  if (algorithm == "sac") return std::make_unique<Sac>(env, SacConfig::from_config(config), seed);
+  if (algorithm == "td3")
+    return std::make_unique<Td3>(env, Td3Config::from_config(config, false), seed);
+  if (algorithm == "ddpg") {
+    return std::make_unique<Td3>(env, Td3Config::from_config(config, true), seed, true);
+  }
+  return std::make_unique<Dqn>(env, DqnConfig::from_config(config), seed);
+}
+
+fs::path temporary(const std::string& name) {
+  return fs::temp_directory_path() /
+         ("tendril_off_policy_" + name + "_" + std::to_string(::getpid()));
+}
+
+// Stable-Baselines3's identity checks (tests/test_identity.py): ≥ 90 of 100 per episode over 20
+// deterministic episodes after a few thousand steps; γ small since actions do not affect the
+// future.
+double identity_score(const std::string& algorithm, const std::string& id, const std::string& algo,
+                      int64_t budget) {
+  const std::string params = id == "Identity-v0" ? "n: 10" : "eps: 0.5";
+  auto env = vec_env(id, params);
+  auto agent = make(algorithm, *env, algo, 0);
+  agent->learn(budget);
+  auto evaluation_env = envs::make(id, Config::parse(params));
+  return evaluate_policy(*agent, *evaluation_env, 20, true, 1000).mean_return();
+}
+
+constexpr const char* kSmallBox = "gamma: 0.5\nlearning_starts: 100\nnet_arch: [64, 64]\n";
+
+TEST(OffPolicyIdentity, SacSolvesBoxIdentity) {
+  EXPECT_GE(identity_score("sac", "IdentityBox-v0", kSmallBox, 2000), 90.0);
+}
+
+TEST(OffPolicyIdentity, Td3SolvesBoxIdentity) {
+  EXPECT_GE(identity_score("td3", "IdentityBox-v0",
+                           std::string(kSmallBox) + "noise_type: normal\nnoise_std: 0.1\n", 2000),
+            90.0);
+}
+
+TEST(OffPolicyIdentity, DdpgSolvesBoxIdentity) {
+  EXPECT_GE(identity_score("ddpg", "IdentityBox-v0",
+                           std::string(kSmallBox) + "noise_type: normal\nnoise_std: 0.1\n", 2000),
+            90.0);
+}
+
+TEST(OffPolicyIdentity, DqnSolvesDiscreteIdentity) {
+  EXPECT_GE(identity_score("dqn", "Identity-v0",
+                           "gamma: 0.5\nlearning_starts: 100\nlearning_rate: 1e-3\n"
+                           "target_update_interval: 100\nexploration_fraction: 0.3\n"
+                           "train_freq: 1\n",
+                           5000),
+            90.0);
+}
+
+// Deterministic actions of an agent on fixed observations.
+envs::BatchMatrix probe(OffPolicyAlgorithm& agent, int observation_size) {
+  envs::BatchMatrix observations(5, observation_size);
+  for (int i = 0; i < observations.size(); ++i) {
+    observations.data()[i] = std::sin(0.7f * static_cast<float>(i));
+  }
+  return agent.predict(observations, /*deterministic=*/true);
+}
+
+class EveryAlgorithm : public ::testing::TestWithParam<std::string> {
+ protected:
+  std::string id() const { return GetParam() == "dqn" ? "CartPole-v1" : "Pendulum-v1"; }
+  std::string algo() const {
+    const std::string common =
+        "learning_starts: 200\nbatch_size: 32\nnet_arch: [32, 32]\nlog_interval: 300\n";
+    if (GetParam() == "dqn") return common + "target_update_interval: 50\n";
+    if (GetParam() == "sac") return common;
+    return common + "noise_type: ornstein_uhlenbeck\n";  // per-env noise state in checkpoints
+  }
+  std::unique_ptr<OffPolicyAlgorithm> agent(envs::VecEnv& env, uint64_t seed) const {
+    return make(GetParam(), env, algo(), seed);
+  }
+};
+
+TEST_P(EveryAlgorithm, SameSeedSameRunOtherSeedOtherRun) {
+  auto env_a = vec_env(id(), "", 2), env_b = vec_env(id(), "", 2), env_c = vec_env(id(), "", 2);
+  auto a = agent(*env_a, 7), b = agent(*env_b, 7), c = agent(*env_c, 8);
+  std::vector<double> returns_a, returns_b, returns_c;
+  const auto record = [](std::vector<double>& returns) {
+    return [&returns](const Progress& p) {
+      returns.push_back(p.episode_return_mean);
+      return true;
+    };
+  };
+  a->learn(1200, record(returns_a));
+  b->learn(1200, record(returns_b));
+  c->learn(1200, record(returns_c));
+  EXPECT_EQ(returns_a, returns_b);
+  EXPECT_NE(returns_a, returns_c);
+  const int size = env_a->observation_space().size();
+  EXPECT_EQ(probe(*a, size), probe(*b, size));
+  EXPECT_GT(a->gradient_updates(), 0);
+}
+
+TEST_P(EveryAlgorithm, SaveLoadWithBufferContinuesExactly) {
+  auto env = vec_env(id(), "", 2);
+  auto original = agent(*env, 3);
+  original->learn(900);
+  const fs::path model = temporary("model_" + GetParam()),
+                 buffer = temporary("buffer_" + GetParam());
+  original->save(model);
+  original->save_replay_buffer(buffer);
+
+  auto other_env = vec_env(id(), "", 2);
+  auto restored = agent(*other_env, 99);  // a different seed: everything must come from the files
+  restored->load(model);
+  restored->load_replay_buffer(buffer);
+  const int size = env->observation_space().size();
+  EXPECT_EQ(probe(*restored, size), probe(*original, size));
+  EXPECT_EQ(restored->num_timesteps(), original->num_timesteps());
+
+  // Both restart their environments from the saved seed stream and go on identically.
+  original->restart_environments();
+  original->learn(1800);
+  restored->learn(1800);
+  EXPECT_EQ(probe(*restored, size), probe(*original, size));
+  fs::remove(model);
+  fs::remove(buffer);
+}
+
+TEST_P(EveryAlgorithm, SaveLoadWithoutBufferKeepsThePolicy) {
+  auto env = vec_env(id(), "", 1);
+  auto original = agent(*env, 4);
+  original->learn(600);
+  const fs::path model = temporary("model_nobuffer_" + GetParam());
+  original->save(model);
+  auto other_env = vec_env(id(), "", 1);
+  auto restored = agent(*other_env, 5);
+  restored->load(model);
+  const int size = env->observation_space().size();
+  EXPECT_EQ(probe(*restored, size), probe(*original, size));
+  EXPECT_EQ(restored->replay_buffer().size(), 0);
+  restored->learn(1200);  // learns on from an empty buffer
+  EXPECT_GT(restored->replay_buffer().size(), 0);
+  fs::remove(model);
+}
+
+TEST_P(EveryAlgorithm, CorruptCheckpointChangesNothing) {
+  auto env = vec_env(id(), "", 1);
+  auto agent_a = agent(*env, 6);
+  agent_a->learn(400);
+  const fs::path model = temporary("corrupt_" + GetParam());
+  agent_a->save(model);
+  std::string bytes;
+  {
+    std::ifstream in(model, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::ofstream(model, std::ios::binary | std::ios::trunc) << bytes.substr(0, bytes.size() / 2);
+  auto other_env = vec_env(id(), "", 1);
+  auto agent_b = agent(*other_env, 7);
+  const envs::BatchMatrix before = probe(*agent_b, env->observation_space().size());
+  EXPECT_THROW(agent_b->load(model), Error);
+  EXPECT_EQ(probe(*agent_b, env->observation_space().size()), before);
+  fs::remove(model);
+}
+
+INSTANTIATE_TEST_SUITE_P(OffPolicy, EveryAlgorithm, ::testing::Values("sac", "td3", "ddpg", "dqn"));
+
+TEST(OffPolicyBuffer, TruncatedEpisodesAreStoredAsNotTerminatedWithTheirFinalObservation) {
+  auto env = vec_env("Pendulum-v1", "max_episode_steps: 50");
+  Sac sac(*env, SacConfig::from_config(Config::parse("learning_starts: 1000\n")), 0);
+  sac.learn(120);  // warm-up only: random actions, 2 episodes cut by the time limit
+  const ReplayBuffer& buffer = sac.replay_buffer();
+  ASSERT_EQ(buffer.size(), 120);
+  for (int64_t i = 0; i < buffer.size(); ++i) EXPECT_FALSE(buffer.terminated(i)) << i;
+  // Within an episode, next observation i is observation i + 1; at the cut it is the final
+  // observation, not the first of the next episode.
+  EXPECT_EQ(buffer.next_observation(10), buffer.observation(11));
+  EXPECT_NE(buffer.next_observation(49), buffer.observation(50));
+  const float cos = buffer.next_observation(49)[0], sin = buffer.next_observation(49)[1];
+  EXPECT_NEAR(cos * cos + sin * sin, 1.0f, 1e-5f);  // a genuine Pendulum state
+}
+
+TEST(OffPolicyBuffer, TerminationsAreStoredAsTerminated) {
+  auto env = vec_env("CartPole-v1", "");
+  Dqn dqn(*env, DqnConfig::from_config(Config::parse("learning_starts: 1000\n")), 0);
+  dqn.learn(300);
+  int terminated = 0;
+  for (int64_t i = 0; i < dqn.replay_buffer().size(); ++i)
+    terminated += dqn.replay_buffer().terminated(i);
+  EXPECT_GT(terminated, 3);  // random CartPole episodes fall within ~20 steps
+}
+
+// A Box action space with an infinite bound.
+class UnboundedEnv : public Env {
+ public:
+  const Space& observation_space() const override { return observations_; }
+  const Space& action_space() const override { return actions_; }
+  Observation reset(std::optional<uint64_t>) override { return Observation::Zero(2); }
+  Step step(const Action&) override { return {Observation::Zero(2), 0.0, false, false, {}}; }
+
+ private:
+  Space observations_ = Space::box(2, -1.0f, 1.0f);
+  Space actions_ = Space::box(Eigen::Vector2f(-1.0f, -1.0f),
+                              Eigen::Vector2f(1.0f, std::numeric_limits<float>::infinity()));
+};
+
+TEST(OffPolicyBadInput, UnboundedActionSpaceIsRefused) {
+  envs::VecEnv env(1, [](int) { return std::make_unique<UnboundedEnv>(); });
+  for (const std::string algorithm : {"sac", "td3", "ddpg"}) {
+    const std::string message = testing::error_message([&] { make(algorithm, env, "{}", 0); });
+    EXPECT_NE(message.find("finite action bounds"), std::string::npos) << message;
+  }
+}
+
+TEST(OffPolicyBadInput, WrongSpacesAndSizesAreNamed) {
+  auto box = vec_env("Pendulum-v1", "");
+  auto discrete = vec_env("CartPole-v1", "");
+  EXPECT_NE(testing::error_message([&] { make("dqn", *box, "{}", 0); }).find("Discrete"),
+            std::string::npos);
+  EXPECT_NE(testing::error_message([&] { make("sac", *discrete, "{}", 0); }).find("Box"),
+            std::string::npos);
+  auto sac = make("sac", *box, "{}", 0);
+  const Observation wrong_size = Observation::Zero(5);
+  EXPECT_NE(testing::error_message([&] {
+              sac->predict(wrong_size, true);
+            }).find("5 components, expected 3"),
+            std::string::npos);
+  Observation nan = Observation::Zero(3);
+  nan[1] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_NE(testing::error_message([&] { sac->predict(nan, true); }).find("not finite"),
+            std::string::npos);
+  // A checkpoint of another action size.
+  auto mountain_car = vec_env("MountainCarContinuous-v0", "");
+  auto other = make("sac", *mountain_car, "{}", 0);
+  const fs::path model = temporary("other_size");
+  other->save(model);
+  EXPECT_NE(testing::error_message([&] { sac->load(model); }).find("observation_size is 2"),
+            std::string::npos);
+  fs::remove(model);
+}
+
+TEST(OffPolicyBadInput, ConfigErrorsNameTheKey) {
+  EXPECT_NE(
+      testing::error_message([] { SacConfig::from_config(Config::parse("tau: 2")); }).find("tau"),
+      std::string::npos);
+  EXPECT_NE(testing::error_message([] {
+              SacConfig::from_config(Config::parse("preset: sb9"));
+            }).find("sb3, sb2"),
+            std::string::npos);
+  EXPECT_NE(testing::error_message([] {
+              SacConfig::from_config(Config::parse("ent_coef: autox"));
+            }).find("ent_coef"),
+            std::string::npos);
+  EXPECT_NE(testing::error_message([] {
+              Td3Config::from_config(Config::parse("noise_type: pink"), false);
+            }).find("noise_type"),
+            std::string::npos);
+  EXPECT_NE(testing::error_message([] {
+              DqnConfig::from_config(Config::parse("polyak: 1"));
+            }).find("polyak"),
+            std::string::npos);
+  // DDPG has no TD3-only keys.
+  EXPECT_NE(testing::error_message([] {
+              Td3Config::from_config(Config::parse("policy_delay: 2"), true);
+            }).find("policy_delay"),
+            std::string::npos);
+}
+
+TEST(OffPolicyPresets, Sb2PresetsCarryStableBaselinesV2Defaults) {
+  const SacConfig sac = SacConfig::from_config(Config::parse("preset: sb2"));
+  EXPECT_EQ(sac.common.buffer_size, 50000);
+  EXPECT_EQ(sac.common.batch_size, 64);
+  EXPECT_EQ(sac.common.net_arch, (std::vector<int64_t>{64, 64}));
+  const Td3Config td3 = Td3Config::from_config(Config::parse("preset: sb2"), false);
+  EXPECT_EQ(td3.common.train_freq, 100);
+  EXPECT_EQ(td3.common.gradient_steps, 100);
+  EXPECT_EQ(td3.common.batch_size, 128);
+  const Td3Config ddpg = Td3Config::from_config(Config::parse("preset: sb2"), true);
+  EXPECT_EQ(ddpg.n_critics, 1);
+  EXPECT_EQ(ddpg.common.tau, 0.001);
+  EXPECT_EQ(*ddpg.critic_learning_rate, 1e-3);
+  EXPECT_EQ(ddpg.common.learning_rate.initial, 1e-4);
+  const Td3Config sb3_ddpg = Td3Config::from_config(Config::parse("{}"), true);
+  EXPECT_EQ(sb3_ddpg.policy_delay, 1);
+  EXPECT_EQ(sb3_ddpg.target_policy_noise, 0.0);
+  EXPECT_EQ(sb3_ddpg.common.net_arch, (std::vector<int64_t>{400, 300}));
+}
+
+}  // namespace
+}  // namespace tendril::rl
