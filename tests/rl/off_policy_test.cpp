@@ -31,7 +31,9 @@ std::unique_ptr<envs::VecEnv> vec_env(const std::string& id, const std::string& 
 std::unique_ptr<OffPolicyAlgorithm> make(const std::string& algorithm, envs::VecEnv& env,
                                          const std::string& algo, uint64_t seed) {
   const Config config = Config::parse(algo);
-  if (algorithm == "sac") return std::make_unique<Sac>(env, SacConfig::from_config(config), seed);
+  if (algorithm == "sac" || algorithm == "sac_sde") {
+    return std::make_unique<Sac>(env, SacConfig::from_config(config), seed);
+  }
   if (algorithm == "td3")
     return std::make_unique<Td3>(env, Td3Config::from_config(config, false), seed);
   if (algorithm == "ddpg") {
@@ -62,6 +64,12 @@ constexpr const char* kSmallBox = "gamma: 0.5\nlearning_starts: 100\nnet_arch: [
 
 TEST(OffPolicyIdentity, SacSolvesBoxIdentity) {
   EXPECT_GE(identity_score("sac", "IdentityBox-v0", kSmallBox, 2000), 90.0);
+}
+
+TEST(OffPolicyIdentity, SacWithStateDependentExplorationSolvesBoxIdentity) {
+  EXPECT_GE(
+      identity_score("sac", "IdentityBox-v0", std::string(kSmallBox) + "use_sde: true\n", 2000),
+      90.0);
 }
 
 TEST(OffPolicyIdentity, Td3SolvesBoxIdentity) {
@@ -102,6 +110,7 @@ class EveryAlgorithm : public ::testing::TestWithParam<std::string> {
         "learning_starts: 200\nbatch_size: 32\nnet_arch: [32, 32]\nlog_interval: 300\n";
     if (GetParam() == "dqn") return common + "target_update_interval: 50\n";
     if (GetParam() == "sac") return common;
+    if (GetParam() == "sac_sde") return common + "use_sde: true\nsde_sample_freq: 4\n";
     return common + "noise_type: ornstein_uhlenbeck\n";  // per-env noise state in checkpoints
   }
   std::unique_ptr<OffPolicyAlgorithm> agent(envs::VecEnv& env, uint64_t seed) const {
@@ -192,7 +201,8 @@ TEST_P(EveryAlgorithm, CorruptCheckpointChangesNothing) {
   fs::remove(model);
 }
 
-INSTANTIATE_TEST_SUITE_P(OffPolicy, EveryAlgorithm, ::testing::Values("sac", "td3", "ddpg", "dqn"));
+INSTANTIATE_TEST_SUITE_P(OffPolicy, EveryAlgorithm,
+                         ::testing::Values("sac", "sac_sde", "td3", "ddpg", "dqn"));
 
 TEST(OffPolicyBuffer, TruncatedEpisodesAreStoredAsNotTerminatedWithTheirFinalObservation) {
   auto env = vec_env("Pendulum-v1", "max_episode_steps: 50");

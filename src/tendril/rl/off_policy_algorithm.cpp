@@ -68,6 +68,7 @@ void OffPolicyAlgorithm::to_env_actions(const Eigen::MatrixXf& actions,
 void OffPolicyAlgorithm::collect(Progress& progress) {
   const int n_envs = env_.num_envs();
   const Space& space = env_.action_space();
+  collection_started();
   for (int64_t k = 0; k < common_.train_freq; ++k) {
     auto start = Clock::now();
     if (needs_reset_) {

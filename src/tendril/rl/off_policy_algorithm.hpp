@@ -70,6 +70,8 @@ class OffPolicyAlgorithm : public Algorithm {
   virtual void episode_ended(int env_index) { (void)env_index; }
   // After every vector-env step (exploration schedules, step-counted target updates).
   virtual void after_step() {}
+  // Before each collection of `train_freq` vector-env steps (gSDE redraws its noise).
+  virtual void collection_started() {}
   // The algorithm's own state (weights, optimizers, noise) in and out of checkpoints.
   // `prepare_load` reads everything and returns the action that installs it, which runs only
   // once every read of the checkpoint has succeeded.

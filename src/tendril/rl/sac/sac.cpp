@@ -11,10 +11,10 @@ namespace {
 constexpr uint64_t kInitStream = 100;
 
 std::vector<int64_t> actor_sizes(int64_t observation_size, const std::vector<int64_t>& hidden,
-                                 int64_t action_size) {
+                                 int64_t head_size) {
   std::vector<int64_t> sizes{observation_size};
   sizes.insert(sizes.end(), hidden.begin(), hidden.end());
-  sizes.push_back(2 * action_size);
+  sizes.push_back(head_size);
   return sizes;
 }
 
@@ -29,13 +29,19 @@ Sac::Sac(envs::VecEnv& env, const SacConfig& config, uint64_t seed)
   const int64_t actions = action_size();
   target_entropy_ = config_.target_entropy.value_or(-static_cast<double>(actions));
   Rng init_rng(seed, kInitStream);
-  actor_ = nn::DenseMlp(actor_sizes(observations, config_.common.net_arch, actions),
+  const std::vector<int64_t>& hidden = config_.common.net_arch;
+  actor_ = nn::DenseMlp(actor_sizes(observations, hidden, config_.use_sde ? actions : 2 * actions),
                         config_.common.activation);
-  actor_parameters_.resize(actor_.parameter_count());
-  actor_.initialize(actor_parameters_, init_rng);
-  actor_gradient_ = Eigen::VectorXf::Zero(actor_.parameter_count());
+  latent_size_ = hidden.empty() ? observations : hidden.back();
+  const int64_t log_std_count = config_.use_sde ? latent_size_ * actions : 0;
+  const int64_t count = actor_.parameter_count() + log_std_count;
+  actor_parameters_.resize(count);
+  actor_.initialize(actor_parameters_.head(actor_.parameter_count()), init_rng);
+  actor_parameters_.tail(log_std_count).setConstant(static_cast<float>(config_.log_std_init));
+  actor_gradient_ = Eigen::VectorXf::Zero(count);
   const double learning_rate = config_.common.learning_rate.initial;
-  actor_optimizer_ = nn::Adam(actor_.parameter_count(), {learning_rate});
+  actor_optimizer_ = nn::Adam(count, {learning_rate});
+  env_exploration_.resize(num_envs());
   critics_ = QCritics(2, observations, actions, config_.common.critic_arch(),
                       config_.common.activation, learning_rate, init_rng);
   log_ent_coef_ = Eigen::VectorXf::Constant(1, static_cast<float>(std::log(config_.ent_coef)));
@@ -44,26 +50,71 @@ Sac::Sac(envs::VecEnv& env, const SacConfig& config, uint64_t seed)
 
 double Sac::entropy_coefficient() const { return std::exp(static_cast<double>(log_ent_coef_[0])); }
 
+const Eigen::MatrixXf& Sac::latent_of(const nn::DenseMlp::Tape& tape) const {
+  return tape.outputs.size() >= 2 ? tape.outputs[tape.outputs.size() - 2] : tape.input;
+}
+
+Eigen::Map<const Eigen::MatrixXf> Sac::log_std() const {
+  return {actor_parameters_.data() + actor_.parameter_count(), latent_size_, action_size()};
+}
+
+Eigen::MatrixXf Sac::standard_normal_matrix(Rng& rng) const {
+  Eigen::MatrixXf matrix(latent_size_, action_size());
+  for (Eigen::Index i = 0; i < matrix.size(); ++i)
+    matrix.data()[i] = static_cast<float>(rng.normal());
+  return matrix;
+}
+
 void Sac::sample_policy(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
-                        PolicySample& sample) const {
-  actor_.forward(actor_parameters_, observations, sample.tape);
-  Eigen::MatrixXf& noise = sample.distribution.noise;
+                        const Eigen::MatrixXf& exploration, PolicySample& sample) const {
+  actor_.forward(actor_parameters_.head(actor_.parameter_count()), observations, sample.tape);
+  if (config_.use_sde) {
+    sample.sde.standard_normal = exploration;
+    sample.sde.evaluate(sample.tape.output(), latent_of(sample.tape), log_std());
+    return;
+  }
+  Eigen::MatrixXf& noise = sample.gaussian.noise;
   noise.resize(action_size(), observations.cols());
   for (Eigen::Index i = 0; i < noise.size(); ++i)
     noise.data()[i] = static_cast<float>(rng.normal());
-  sample.distribution.evaluate(sample.tape.output());
+  sample.gaussian.evaluate(sample.tape.output());
 }
 
 void Sac::act(const Eigen::Ref<const Eigen::MatrixXf>& observations, ActMode mode, Rng& rng,
               Eigen::MatrixXf& actions) {
-  if (mode != ActMode::kDeterministic) {
-    PolicySample sample;
-    sample_policy(observations, rng, sample);
-    actions = sample.distribution.actions;
+  if (mode == ActMode::kDeterministic) {
+    actor_.forward(actor_parameters_.head(actor_.parameter_count()), observations, act_tape_);
+    actions = act_tape_.output().topRows(action_size());
+    // gSDE's mean is clipped to ±2 (SB3's clip_mean) before the squash.
+    if (config_.use_sde) actions = actions.cwiseMax(-2.0f).cwiseMin(2.0f);
+    actions = actions.array().tanh().matrix();
     return;
   }
-  actor_.forward(actor_parameters_, observations, act_tape_);
-  actions = act_tape_.output().topRows(action_size()).array().tanh().matrix();
+  PolicySample sample;
+  if (!config_.use_sde) {
+    sample_policy(observations, rng, exploration_, sample);
+    actions = sample.gaussian.actions;
+    return;
+  }
+  if (mode == ActMode::kStochastic) {
+    sample_policy(observations, rng, standard_normal_matrix(rng), sample);
+    actions = sample.sde.actions;
+    return;
+  }
+  // Collecting: each env keeps its exploration matrix until the next collection starts, or for
+  // `sde_sample_freq` steps (SB3's reset_noise).
+  if (resample_exploration_ ||
+      (config_.sde_sample_freq > 0 && steps_since_resample_ >= config_.sde_sample_freq)) {
+    for (auto& matrix : env_exploration_) matrix = standard_normal_matrix(rng);
+    resample_exploration_ = false;
+    steps_since_resample_ = 0;
+  }
+  ++steps_since_resample_;
+  actions.resize(action_size(), observations.cols());
+  for (Eigen::Index i = 0; i < observations.cols(); ++i) {
+    sample_policy(observations.col(i), rng, env_exploration_[i], sample);
+    actions.col(i) = sample.sde.actions;
+  }
 }
 
 TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
@@ -76,13 +127,15 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
 
   for (int64_t step = 0; step < gradient_steps; ++step) {
     buffer().sample(batch_size, sample_rng(), batch_);
-    sample_policy(batch_.observations, sample_rng(), current_);
+    // gSDE: one exploration matrix for the whole batch, new at every gradient step (SB3).
+    if (config_.use_sde) exploration_ = standard_normal_matrix(sample_rng());
+    sample_policy(batch_.observations, sample_rng(), exploration_, current_);
 
     // α: minimise −log α · (log π + H̄) (eq. 18), with α taken before its own step, as SB3.
     const auto ent_coef = static_cast<float>(entropy_coefficient());
     if (config_.auto_entropy) {
       const double mean_term =
-          (current_.distribution.log_probs.array() + static_cast<float>(target_entropy_))
+          (log_probs_of(current_).array() + static_cast<float>(target_entropy_))
               .cast<double>()
               .mean();
       ent_loss_sum += -static_cast<double>(log_ent_coef_[0]) * mean_term;
@@ -94,11 +147,11 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
 
     // Critic targets: y = r + γ (1 − d) (min_i Q̄_i(s', a') − α log π(a'|s')), a' ~ π(·|s')  (eq. 3,
     // 5)
-    sample_policy(batch_.next_observations, sample_rng(), next_);
-    concatenate_rows(batch_.next_observations, next_.distribution.actions, critic_inputs_);
+    sample_policy(batch_.next_observations, sample_rng(), exploration_, next_);
+    concatenate_rows(batch_.next_observations, actions_of(next_), critic_inputs_);
     critics_.forward(critic_inputs_, /*target=*/true);
     Eigen::VectorXf targets = (critics_.values().colwise().minCoeff().transpose().array() -
-                               ent_coef * next_.distribution.log_probs.array())
+                               ent_coef * log_probs_of(next_).array())
                                   .matrix();
     targets =
         (batch_.rewards.array() + gamma * (1.0f - batch_.terminated.array()) * targets.array())
@@ -118,7 +171,7 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
 
     // Actor step on mean(α log π(a|s) − min_i Q_i(s, a)), a = tanh(μ + σ ε)  (eq. 12), through
     // the just-updated critics.
-    concatenate_rows(batch_.observations, current_.distribution.actions, critic_inputs_);
+    concatenate_rows(batch_.observations, actions_of(current_), critic_inputs_);
     critics_.forward(critic_inputs_, /*target=*/false);
     const Eigen::MatrixXf& q = critics_.values();
     value_gradient_.setZero(q.rows(), q.cols());
@@ -128,14 +181,23 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
       min_q_sum += q.col(i).minCoeff(&argmin);
       value_gradient_(argmin, i) = -inverse_batch;
     }
-    actor_loss_sum += ent_coef * static_cast<double>(current_.distribution.log_probs.mean()) -
+    actor_loss_sum += ent_coef * static_cast<double>(log_probs_of(current_).mean()) -
                       min_q_sum / static_cast<double>(batch_size);
     critics_.backward(value_gradient_, /*parameters=*/false, &input_gradient_);
 
-    current_.distribution.head_gradient(current_.tape.output(), input_gradient_.bottomRows(a),
-                                        ent_coef, actor_output_gradient_);
-    actor_.backward(actor_parameters_, current_.tape, actor_output_gradient_, actor_gradient_,
-                    nullptr, actor_scratch_);
+    const auto network = actor_.parameter_count();
+    if (config_.use_sde) {
+      Eigen::Map<Eigen::MatrixXf> log_std_gradient(actor_gradient_.data() + network, latent_size_,
+                                                   a);
+      current_.sde.gradients(current_.tape.output(), latent_of(current_.tape), log_std(),
+                             input_gradient_.bottomRows(a), ent_coef, actor_output_gradient_,
+                             log_std_gradient);
+    } else {
+      current_.gaussian.head_gradient(current_.tape.output(), input_gradient_.bottomRows(a),
+                                      ent_coef, actor_output_gradient_);
+    }
+    actor_.backward(actor_parameters_.head(network), current_.tape, actor_output_gradient_,
+                    actor_gradient_.head(network), nullptr, actor_scratch_);
     actor_optimizer_.set_learning_rate(learning_rate);
     actor_optimizer_.step(actor_parameters_, actor_gradient_);
     actor_gradient_.setZero();

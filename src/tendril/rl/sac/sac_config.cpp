@@ -56,6 +56,9 @@ SacConfig SacConfig::from_config(const Config& algo) {
       config.q_clip = algo.get<double>("q_clip");
     }
   }
+  config.use_sde = algo.get_or<bool>("use_sde", config.use_sde);
+  config.sde_sample_freq = algo.get_or<int64_t>("sde_sample_freq", config.sde_sample_freq);
+  config.log_std_init = algo.get_or<double>("log_std_init", config.log_std_init);
   algo.reject_unknown();
   config.validate();
   return config;
@@ -67,6 +70,8 @@ void SacConfig::validate() const {
   require(ent_coef > 0.0, "ent_coef must be positive", where);
   require(target_update_interval >= 1, "target_update_interval must be at least 1", where);
   require(!q_clip || *q_clip > 0.0, "q_clip must be positive", where);
+  require(sde_sample_freq == -1 || sde_sample_freq >= 1, "sde_sample_freq must be -1 or positive",
+          where);
 }
 
 }  // namespace tendril::rl

@@ -20,6 +20,12 @@ struct SacConfig {
   // Clip the critics' regression targets to ±q_clip (a guard against divergence in long runs
   // with large rewards); unset: no clipping.
   std::optional<double> q_clip;
+  // gSDE exploration (Raffin et al. 2022) instead of independent Gaussian noise; its log σ
+  // starts at `log_std_init` (SB3's −3 for SAC); `sde_sample_freq` env steps between new
+  // exploration matrices while collecting (−1: only when a collection starts, SB3's default).
+  bool use_sde = false;
+  int64_t sde_sample_freq = -1;
+  double log_std_init = -3.0;
 
   static SacConfig sb3();
   // stable-baselines v2's SAC defaults (the Elastica paper's runs): buffer 50 000, batch 64,
@@ -27,7 +33,8 @@ struct SacConfig {
   static SacConfig sb2();
   // `preset: sb3 | sb2` and then, over it, the common off-policy keys and
   //   ent_coef (a number, `auto`, or `auto_<initial>` as SB3), target_entropy (a number or
-  //   `auto`), target_update_interval, q_clip (a number or `none`).
+  //   `auto`), target_update_interval, q_clip (a number or `none`), use_sde, sde_sample_freq,
+  //   log_std_init.
   static SacConfig from_config(const Config& algo);
 
   void validate() const;
