@@ -35,7 +35,7 @@ int eval_command(const std::vector<std::string>& args) {
   const std::unique_ptr<envs::VecEnv> env = rl::make_vec_env(experiment.env);
   const std::unique_ptr<rl::Algorithm> algorithm = rl::make_algorithm(experiment, *env);
   algorithm->load(model);
-  const std::unique_ptr<Env> eval_env = rl::make_evaluation_env(experiment.env, env->env(0));
+  const std::unique_ptr<Env> eval_env = rl::make_evaluation_env(experiment.env, *env);
   const bool deterministic = line.has("deterministic");
   const rl::EvaluationResult result =
       rl::evaluate_policy(*algorithm, *eval_env, episodes, deterministic, seed);

@@ -37,7 +37,7 @@ Outcome train_from_config(const std::string& name) {
       name.c_str(), static_cast<long long>(algorithm->num_timesteps()), seconds,
       static_cast<double>(algorithm->num_timesteps()) / seconds, env_seconds, inference_seconds,
       update_seconds);
-  const auto evaluation_env = make_evaluation_env(experiment.env, env->env(0));
+  const auto evaluation_env = make_evaluation_env(experiment.env, *env);
   const EvaluationResult result =
       evaluate_policy(*algorithm, *evaluation_env, 20, true, experiment.seed + 1000);
   std::printf("%s: evaluation return %.1f ± %.1f\n", name.c_str(), result.mean_return(),

@@ -18,11 +18,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Two envs under both normalizations: resuming must restore their shared statistics too.
 constexpr const char* kExperiment = R"(
 algorithm: ppo
 env:
   id: Pendulum-v1
   n_envs: 2
+  normalize_observation: true
   normalize_reward: true
 algo:
   n_steps: 128

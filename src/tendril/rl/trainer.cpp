@@ -37,11 +37,11 @@ std::string duration_text(double seconds) {
   return text;
 }
 
-// Evaluation on a fresh environment with the first training env's frozen observation
-// statistics and raw rewards (SB3's EvalCallback on a VecNormalize'd model).
+// Evaluation on a fresh environment with the training VecEnv's frozen observation statistics
+// and raw rewards (SB3's EvalCallback on a VecNormalize'd model).
 EvaluationResult evaluate(const Experiment& experiment, Algorithm& algorithm,
-                          envs::VecEnv& training, uint64_t seed) {
-  const std::unique_ptr<Env> env = make_evaluation_env(experiment.env, training.env(0));
+                          const envs::VecEnv& training, uint64_t seed) {
+  const std::unique_ptr<Env> env = make_evaluation_env(experiment.env, training);
   return evaluate_policy(algorithm, *env, experiment.eval_episodes, experiment.eval_deterministic,
                          seed);
 }

@@ -4,36 +4,37 @@
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/wrappers/episode_statistics.hpp"
 #include "tendril/envs/wrappers/normalize_observation.hpp"
-#include "tendril/envs/wrappers/normalize_reward.hpp"
 
 namespace tendril::rl {
 
 std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options) {
   require(options.n_envs >= 1, "n_envs must be at least 1", "rl::make_vec_env");
   auto factory = [&options](int) -> std::unique_ptr<Env> {
-    std::unique_ptr<Env> env = envs::make(options.id, options.params);
-    env = std::make_unique<envs::EpisodeStatistics>(std::move(env));
-    if (options.normalize_observation) {
-      env = std::make_unique<envs::NormalizeObservation>(std::move(env));
-    }
-    if (options.normalize_reward) {
-      envs::NormalizeReward::Options reward_options;
-      reward_options.gamma = options.reward_gamma;
-      env = std::make_unique<envs::NormalizeReward>(std::move(env), reward_options);
-    }
-    return env;
+    return std::make_unique<envs::EpisodeStatistics>(envs::make(options.id, options.params));
   };
-  return std::make_unique<envs::VecEnv>(options.n_envs, factory, options.num_threads);
+  auto env = std::make_unique<envs::VecEnv>(options.n_envs, factory, options.num_threads);
+  if (options.normalize_observation || options.normalize_reward) {
+    envs::VecNormalize::Options normalize;
+    normalize.normalize_observation = options.normalize_observation;
+    normalize.normalize_reward = options.normalize_reward;
+    normalize.gamma = options.reward_gamma;
+    env->attach_normalizer(normalize);
+  }
+  return env;
 }
 
-std::unique_ptr<Env> make_evaluation_env(const VecEnvOptions& options, Env& training_env) {
+std::unique_ptr<Env> make_evaluation_env(const VecEnvOptions& options,
+                                         const envs::VecEnv& training_env) {
   std::unique_ptr<Env> env = envs::make(options.id, options.params);
   if (options.normalize_observation) {
-    auto normalizer = std::make_unique<envs::NormalizeObservation>(std::move(env));
-    const auto* trained = envs::find_wrapper<envs::NormalizeObservation>(training_env);
-    require(trained != nullptr, "the training environment does not normalize observations",
-            "rl::make_evaluation_env");
-    normalizer->set_statistics(trained->statistics());
+    const envs::VecNormalize* trained = training_env.normalizer();
+    require(trained != nullptr && trained->options().normalize_observation,
+            "the training environment does not normalize observations", "rl::make_evaluation_env");
+    auto normalizer = std::make_unique<envs::NormalizeObservation>(
+        std::move(env),
+        envs::NormalizeObservation::Options{.clip = trained->options().clip_observation,
+                                            .epsilon = trained->options().epsilon});
+    normalizer->set_statistics(trained->observation_statistics());
     normalizer->set_training(false);
     env = std::move(normalizer);
   }

@@ -10,9 +10,10 @@ namespace tendril::rl {
 
 // What SB3's make_vec_env (+ VecNormalize) builds for training: `n_envs` copies of a registered
 // environment, each wrapped as
-//   registry env (with its time limit) → EpisodeStatistics → [NormalizeObservation]
-//   → [NormalizeReward(gamma)]
-// so episode returns are reported raw while the learner sees normalized values.
+//   registry env (with its time limit) → EpisodeStatistics,
+// in a VecEnv that, when either normalization is on, carries one VecNormalize shared by all
+// envs (statistics of the whole batch, SB3's semantics), so episode returns are reported raw
+// while the learner sees normalized values.
 struct VecEnvOptions {
   std::string id;
   Config params;
@@ -25,9 +26,11 @@ struct VecEnvOptions {
 
 std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options);
 
-// One environment for evaluation, wrapped as for training but with raw rewards and, when
-// observations are normalized, `training_env`'s statistics frozen (SB3's evaluation of a
-// VecNormalize'd model). Episode returns are in the environment's own units.
-std::unique_ptr<Env> make_evaluation_env(const VecEnvOptions& options, Env& training_env);
+// One environment for evaluation, with raw rewards and, when observations are normalized,
+// `training_env`'s shared observation statistics frozen in a NormalizeObservation wrapper
+// (SB3's evaluation of a VecNormalize'd model). Episode returns are in the environment's own
+// units. Raises Error if observations are to be normalized but `training_env` does not.
+std::unique_ptr<Env> make_evaluation_env(const VecEnvOptions& options,
+                                         const envs::VecEnv& training_env);
 
 }  // namespace tendril::rl

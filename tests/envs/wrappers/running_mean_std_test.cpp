@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::envs {
@@ -25,6 +27,33 @@ TEST(RunningMeanStd, EqualsThePooledStatisticsOfPriorAndSamples) {
   EXPECT_DOUBLE_EQ(stats.count(), n);
   EXPECT_NEAR(stats.mean()[0], mean, 1e-12);
   EXPECT_NEAR(stats.var()[0], m2 / n, 1e-12);
+}
+
+// SB3's update(arr): a batch enters with its population mean and variance and its row count.
+TEST(RunningMeanStd, BatchUpdateMergesThePopulationMomentsOfTheRows) {
+  Eigen::MatrixXd batch(3, 2);
+  batch << 1.0, -4.0, 2.0, 0.5, 6.0, 3.0;
+  RunningMeanStd stats(2), by_moments(2);
+  stats.update_batch(batch);
+  const Eigen::Vector2d mean(3.0, -0.5 / 3.0);
+  Eigen::Vector2d var;
+  var[0] = (4.0 + 1.0 + 9.0) / 3.0;
+  var[1] =
+      (std::pow(-4.0 - mean[1], 2) + std::pow(0.5 - mean[1], 2) + std::pow(3.0 - mean[1], 2)) / 3.0;
+  by_moments.update_from_moments(mean, var, 3.0);
+  EXPECT_DOUBLE_EQ(stats.count(), 3.0 + RunningMeanStd::kInitialCount);
+  EXPECT_TRUE(stats.mean().isApprox(by_moments.mean(), 1e-14));
+  EXPECT_TRUE(stats.var().isApprox(by_moments.var(), 1e-14));
+  EXPECT_THROW(stats.update_batch(Eigen::MatrixXd(0, 2)), Error);
+}
+
+TEST(RunningMeanStd, NormalizeCentresScalesAndClipsScaleOnlyScales) {
+  const RunningMeanStd stats = RunningMeanStd::from_array(std::vector<double>{5.0, 1.0, 4.0}, 1);
+  EXPECT_DOUBLE_EQ(stats.normalize(Eigen::VectorXd::Constant(1, 3.0), 0.0, 10.0)[0], 1.0);
+  EXPECT_DOUBLE_EQ(stats.normalize(Eigen::VectorXd::Constant(1, 101.0), 0.0, 10.0)[0], 10.0);
+  EXPECT_DOUBLE_EQ(stats.normalize(Eigen::VectorXd::Constant(1, -99.0), 0.0, 10.0)[0], -10.0);
+  EXPECT_DOUBLE_EQ(stats.scale(3.0, 0.0, 10.0), 1.5);  // not centred: the sign is kept
+  EXPECT_DOUBLE_EQ(stats.scale(-30.0, 0.0, 10.0), -10.0);
 }
 
 TEST(RunningMeanStd, MergeEqualsFeedingAllSamplesToOne) {

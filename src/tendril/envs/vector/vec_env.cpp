@@ -95,6 +95,7 @@ const BatchMatrix& VecEnv::reset(std::optional<uint64_t> seed) {
             kWhere);
     result_.observations.row(i) = observation.transpose();
   });
+  if (normalizer_) normalizer_->reset(result_.observations);
   ready_ = true;
   return result_.observations;
 }
@@ -132,7 +133,15 @@ const VecStep& VecEnv::step(const BatchMatrix& actions) {
   }
   for (int i = 0; i < num_envs(); ++i) actions_[i] = actions.row(i).transpose();
   for_each_env([this](int i) { step_one(i); });
+  if (normalizer_) normalizer_->step(result_);
   return result_;
+}
+
+VecNormalize& VecEnv::attach_normalizer(const VecNormalize::Options& options) {
+  normalizer_ =
+      std::make_unique<VecNormalize>(num_envs(), envs_.front()->observation_space(), options);
+  ready_ = false;
+  return *normalizer_;
 }
 
 }  // namespace tendril::envs

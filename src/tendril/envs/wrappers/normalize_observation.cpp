@@ -24,9 +24,7 @@ NormalizeObservation::NormalizeObservation(std::unique_ptr<Env> inner, Options o
 }
 
 Observation NormalizeObservation::normalize(const Observation& raw) const {
-  const Eigen::ArrayXd centred = raw.cast<double>().array() - statistics_.mean().array();
-  const Eigen::ArrayXd scaled = centred / (statistics_.var().array() + options_.epsilon).sqrt();
-  return scaled.max(-options_.clip).min(options_.clip).cast<float>().matrix();
+  return statistics_.normalize(raw.cast<double>(), options_.epsilon, options_.clip).cast<float>();
 }
 
 Observation NormalizeObservation::reset(std::optional<uint64_t> seed) {

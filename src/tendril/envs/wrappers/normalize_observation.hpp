@@ -16,8 +16,10 @@ namespace tendril::envs {
 //
 // where mean and var are running statistics (RunningMeanStd) updated, while training, with
 // every observation this wrapper returns — those from reset included — before normalizing it.
-// Frozen (set_training(false)) for evaluation, the statistics stay fixed. Each wrapper keeps its
-// own statistics; merge copies with RunningMeanStd::merge to pool them across environments.
+// Frozen (set_training(false)) for evaluation, the statistics stay fixed. This wrapper serves
+// one environment — typically an evaluation env given a VecEnv's frozen statistics; to train on
+// a VecEnv, attach a VecNormalize (vector/vec_normalize.hpp), which keeps one set of statistics
+// for all its environments as SB3 does.
 class NormalizeObservation : public Wrapper {
  public:
   struct Options {

@@ -1,7 +1,5 @@
 #include "tendril/envs/wrappers/normalize_reward.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <string>
 
 namespace tendril::envs {
@@ -15,8 +13,7 @@ NormalizeReward::NormalizeReward(std::unique_ptr<Env> inner, Options options)
 }
 
 double NormalizeReward::normalize(double raw) const {
-  return std::clamp(raw / std::sqrt(statistics_.var()[0] + options_.epsilon), -options_.clip,
-                    options_.clip);
+  return statistics_.scale(raw, options_.epsilon, options_.clip);
 }
 
 Observation NormalizeReward::reset(std::optional<uint64_t> seed) {

@@ -18,7 +18,9 @@ namespace tendril::envs {
 //
 // R restarts at 0 after a terminated or truncated step and on reset. The reward is scaled, not
 // centred, so the sign of every reward is kept. Frozen (set_training(false)) for evaluation, the
-// statistics stay fixed. Put EpisodeStatistics inside this wrapper to report raw returns.
+// statistics stay fixed. Put EpisodeStatistics inside this wrapper to report raw returns. This
+// wrapper serves one environment; on a VecEnv, VecNormalize (vector/vec_normalize.hpp) keeps
+// one return statistic for all its environments as SB3 does.
 class NormalizeReward : public Wrapper {
  public:
   struct Options {

@@ -1,5 +1,6 @@
 #include "tendril/envs/wrappers/running_mean_std.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -17,6 +18,14 @@ void RunningMeanStd::update(const Eigen::VectorXd& sample) {
   update_from_moments(sample, Eigen::VectorXd::Zero(sample.size()), 1.0);
 }
 
+void RunningMeanStd::update_batch(const Eigen::Ref<const Eigen::MatrixXd>& samples) {
+  require(samples.rows() >= 1, "batch has no samples", "envs::RunningMeanStd");
+  const Eigen::VectorXd batch_mean = samples.colwise().mean().transpose();
+  const Eigen::VectorXd batch_var =
+      (samples.rowwise() - batch_mean.transpose()).array().square().colwise().mean().transpose();
+  update_from_moments(batch_mean, batch_var, static_cast<double>(samples.rows()));
+}
+
 void RunningMeanStd::update_from_moments(const Eigen::VectorXd& batch_mean,
                                          const Eigen::VectorXd& batch_var, double batch_count) {
   require(batch_mean.size() == mean_.size() && batch_var.size() == mean_.size(),
@@ -30,6 +39,16 @@ void RunningMeanStd::update_from_moments(const Eigen::VectorXd& batch_mean,
   mean_ = (mean_.array() + delta * batch_count / total).matrix();
   var_ = (m2 / total).matrix();
   count_ = total;
+}
+
+Eigen::VectorXd RunningMeanStd::normalize(const Eigen::VectorXd& x, double epsilon,
+                                          double clip) const {
+  const Eigen::ArrayXd scaled = (x - mean_).array() / (var_.array() + epsilon).sqrt();
+  return scaled.max(-clip).min(clip).matrix();
+}
+
+double RunningMeanStd::scale(double x, double epsilon, double clip) const {
+  return std::clamp(x / std::sqrt(var_[0] + epsilon), -clip, clip);
 }
 
 void RunningMeanStd::merge(const RunningMeanStd& other) {

@@ -31,7 +31,7 @@ class Wrapper : public Env {
 };
 
 // The outermost wrapper of type W in the chain that starts at `env` (which may itself be a W),
-// or nullptr: how a trainer finds, say, the NormalizeObservation to save its statistics.
+// or nullptr: how a caller reaches, say, the task inside its wrappers to inspect its state.
 template <typename W>
 W* find_wrapper(Env& env) {
   Env* current = &env;
