@@ -46,8 +46,9 @@ TorchMirror mirror(const DenseMlp& mlp, const Eigen::VectorXf& parameters) {
   return result;
 }
 
-void check_against_autograd(Activation hidden, bool tanh_output) {
-  const DenseMlp mlp({5, 16, 12, 3}, hidden, tanh_output);
+void check_against_autograd(Activation hidden, bool tanh_output, bool trunk = false) {
+  const DenseMlp mlp = trunk ? DenseMlp::trunk({5, 16, 12, 3}, hidden)
+                             : DenseMlp({5, 16, 12, 3}, hidden, tanh_output);
   Rng rng(7);
   Eigen::VectorXf parameters(mlp.parameter_count());
   mlp.initialize(parameters, rng);
@@ -67,7 +68,7 @@ void check_against_autograd(Activation hidden, bool tanh_output) {
   for (std::size_t layer = 0; layer < net.weights.size(); ++layer) {
     y = torch::nn::functional::linear(y, net.weights[layer], net.biases[layer]);
     const bool last = layer + 1 == net.weights.size();
-    if (!last) y = hidden == Activation::kTanh ? torch::tanh(y) : torch::relu(y);
+    if (!last || trunk) y = hidden == Activation::kTanh ? torch::tanh(y) : torch::relu(y);
     if (last && tanh_output) y = torch::tanh(y);
   }
   (y * to_tensor(output_gradient).t()).sum().backward();
@@ -95,6 +96,10 @@ void check_against_autograd(Activation hidden, bool tanh_output) {
 TEST(DenseMlp, ReluPassesMatchAutograd) { check_against_autograd(Activation::kRelu, false); }
 TEST(DenseMlp, TanhPassesMatchAutograd) { check_against_autograd(Activation::kTanh, false); }
 TEST(DenseMlp, TanhOutputPassesMatchAutograd) { check_against_autograd(Activation::kRelu, true); }
+TEST(DenseMlp, TrunkPassesMatchAutograd) {
+  check_against_autograd(Activation::kTanh, false, /*trunk=*/true);
+  check_against_autograd(Activation::kRelu, false, /*trunk=*/true);
+}
 
 TEST(DenseMlp, BackwardAccumulatesIntoTheGradient) {
   const DenseMlp mlp({2, 4, 1}, Activation::kTanh);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "tendril/core/error.hpp"
 
@@ -45,6 +46,12 @@ DenseMlp::DenseMlp(std::vector<int64_t> sizes, Activation hidden, bool tanh_outp
   }
 }
 
+DenseMlp DenseMlp::trunk(std::vector<int64_t> sizes, Activation activation) {
+  DenseMlp mlp(std::move(sizes), activation);
+  mlp.activated_output_ = true;
+  return mlp;
+}
+
 void DenseMlp::initialize(Eigen::Ref<Eigen::VectorXf> parameters, Rng& rng) const {
   require(parameters.size() == parameter_count_, "parameter vector has the wrong size",
           "nn::DenseMlp::initialize");
@@ -73,7 +80,7 @@ void DenseMlp::forward(const Eigen::Ref<const Eigen::VectorXf>& parameters,
     y.noalias() = weight * x;
     y.colwise() += bias;
     const bool last = layer + 2 == sizes_.size();
-    if (!last) {
+    if (!last || activated_output_) {
       activate(hidden_, y);
     } else if (tanh_output_) {
       activate(Activation::kTanh, y);
@@ -90,8 +97,11 @@ void DenseMlp::backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, con
   scratch.resize(layers);
   // scratch[l]: ∂L/∂(pre-activation of layer l).
   scratch[layers - 1] = output_gradient;
-  if (tanh_output_)
+  if (activated_output_) {
+    scale_by_derivative(hidden_, tape.outputs[layers - 1], scratch[layers - 1]);
+  } else if (tanh_output_) {
     scale_by_derivative(Activation::kTanh, tape.outputs[layers - 1], scratch[layers - 1]);
+  }
   const float* data = parameters.data();
   float* gradient = parameter_gradient.size() == 0 ? nullptr : parameter_gradient.data();
   require(gradient == nullptr || parameter_gradient.size() == parameter_count_,

@@ -34,6 +34,9 @@ class DenseMlp {
   // sizes: input, hidden…, output (at least input and output). Hidden layers use `hidden`;
   // the output layer is linear, or tanh when `tanh_output` (a deterministic actor's squash).
   DenseMlp(std::vector<int64_t> sizes, Activation hidden, bool tanh_output = false);
+  // A feature trunk: every layer, the last one included, is followed by `activation` (the
+  // trunk of an actor-critic, whose heads are separate linear layers).
+  static DenseMlp trunk(std::vector<int64_t> sizes, Activation activation);
 
   int64_t input_size() const { return sizes_.front(); }
   int64_t output_size() const { return sizes_.back(); }
@@ -62,6 +65,7 @@ class DenseMlp {
   std::vector<int64_t> offsets_;  // of each layer's weight in the parameter vector
   Activation hidden_ = Activation::kRelu;
   bool tanh_output_ = false;
+  bool activated_output_ = false;  // the output layer uses `hidden_` too (a trunk)
   int64_t parameter_count_ = 0;
 };
 

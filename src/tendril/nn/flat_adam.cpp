@@ -1,6 +1,5 @@
 #include "tendril/nn/flat_adam.hpp"
 
-#include <cmath>
 #include <string>
 #include <utility>
 
@@ -9,32 +8,27 @@
 namespace tendril::nn {
 
 FlatAdam::FlatAdam(std::vector<torch::Tensor> parameters, const Options& options)
-    : parameters_(std::move(parameters)), options_(options) {
-  first_moment_ = torch::zeros({parameters_.numel()}, torch::kFloat);
-  second_moment_ = torch::zeros({parameters_.numel()}, torch::kFloat);
-  denominator_ = torch::empty({parameters_.numel()}, torch::kFloat);
-}
+    : parameters_(std::move(parameters)),
+      adam_(parameters_.numel(), {.learning_rate = options.learning_rate,
+                                  .beta1 = options.beta1,
+                                  .beta2 = options.beta2,
+                                  .epsilon = options.epsilon}) {}
 
 void FlatAdam::step() {
-  torch::NoGradGuard no_grad;
-  ++steps_;
-  const double bias_correction1 = 1.0 - std::pow(options_.beta1, static_cast<double>(steps_));
-  const double bias_correction2 = 1.0 - std::pow(options_.beta2, static_cast<double>(steps_));
-  const torch::Tensor& gradient = parameters_.gradients();
-  first_moment_.mul_(options_.beta1).add_(gradient, 1.0 - options_.beta1);
-  second_moment_.mul_(options_.beta2).addcmul_(gradient, gradient, 1.0 - options_.beta2);
-  torch::sqrt_out(denominator_, second_moment_);
-  denominator_.div_(std::sqrt(bias_correction2)).add_(options_.epsilon);
-  const double step_size = options_.learning_rate / bias_correction1;
   // `values()` is the storage every parameter views, so this moves all of them.
-  torch::Tensor values = parameters_.values();
-  values.addcdiv_(first_moment_, denominator_, -step_size);
+  const int64_t n = parameters_.numel();
+  adam_.step(Eigen::Map<Eigen::VectorXf>(parameters_.values().data_ptr<float>(), n),
+             Eigen::Map<const Eigen::VectorXf>(parameters_.gradients().data_ptr<float>(), n));
 }
 
 void FlatAdam::save(torch::serialize::OutputArchive& archive) const {
-  archive.write("steps", torch::tensor({steps_}, torch::kLong));
-  archive.write("first_moment", first_moment_);
-  archive.write("second_moment", second_moment_);
+  const auto tensor_of = [](const Eigen::VectorXf& moment) {
+    return torch::from_blob(const_cast<float*>(moment.data()), {moment.size()}, torch::kFloat)
+        .clone();
+  };
+  archive.write("steps", torch::tensor({adam_.steps()}, torch::kLong));
+  archive.write("first_moment", tensor_of(adam_.first_moment()));
+  archive.write("second_moment", tensor_of(adam_.second_moment()));
 }
 
 void FlatAdam::load(torch::serialize::InputArchive& archive) {
@@ -50,10 +44,12 @@ void FlatAdam::load(torch::serialize::InputArchive& archive) {
   require(fits(first) && fits(second),
           "Adam moments do not fit the " + std::to_string(parameters_.numel()) + " parameters",
           "nn::FlatAdam::load");
-  torch::NoGradGuard no_grad;
-  steps_ = steps.item<int64_t>();
-  first_moment_.copy_(first.reshape({-1}));
-  second_moment_.copy_(second.reshape({-1}));
+  const auto vector_of = [](const torch::Tensor& moment) {
+    const torch::Tensor values = moment.reshape({-1}).contiguous();
+    return Eigen::VectorXf(
+        Eigen::Map<const Eigen::VectorXf>(values.data_ptr<float>(), values.numel()));
+  };
+  adam_.set_state(steps.item<int64_t>(), vector_of(first), vector_of(second));
 }
 
 }  // namespace tendril::nn

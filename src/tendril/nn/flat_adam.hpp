@@ -5,13 +5,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "tendril/nn/adam.hpp"
 #include "tendril/nn/flat_parameters.hpp"
 
 namespace tendril::nn {
 
 // Adam (Kingma & Ba 2015, "Adam: A Method for Stochastic Optimization", Algorithm 1) over the
-// parameters of a FlatParameters, as whole-buffer operations. The arithmetic is
-// torch::optim::Adam's (no weight decay, no AMSGrad), so it is Stable-Baselines3's optimizer:
+// parameters of a FlatParameters: nn::Adam's single pass over the flat value and gradient
+// buffers, in place. The arithmetic is torch::optim::Adam's (no weight decay, no AMSGrad), so
+// it is Stable-Baselines3's optimizer, equal to it up to float rounding:
 //   m ← β₁ m + (1 − β₁) g,   v ← β₂ v + (1 − β₂) g²
 //   θ ← θ − (lr / (1 − β₁ᵗ)) · m / (√v / √(1 − β₂ᵗ) + ε)
 class FlatAdam {
@@ -32,9 +34,9 @@ class FlatAdam {
   // One update from the current gradients.
   void step();
 
-  double learning_rate() const { return options_.learning_rate; }
-  void set_learning_rate(double learning_rate) { options_.learning_rate = learning_rate; }
-  int64_t steps() const { return steps_; }
+  double learning_rate() const { return adam_.learning_rate(); }
+  void set_learning_rate(double learning_rate) { adam_.set_learning_rate(learning_rate); }
+  int64_t steps() const { return adam_.steps(); }
 
   // The state needed to continue: step count and both moment buffers. `load` raises Error
   // when the saved buffers do not fit these parameters.
@@ -43,9 +45,7 @@ class FlatAdam {
 
  private:
   FlatParameters parameters_;
-  Options options_;
-  int64_t steps_ = 0;
-  torch::Tensor first_moment_, second_moment_, denominator_;
+  Adam adam_;
 };
 
 }  // namespace tendril::nn

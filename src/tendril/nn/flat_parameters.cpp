@@ -1,5 +1,7 @@
 #include "tendril/nn/flat_parameters.hpp"
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -30,16 +32,19 @@ FlatParameters::FlatParameters(std::vector<torch::Tensor> parameters)
 }
 
 double FlatParameters::clip_grad_norm(double max_norm) {
-  // One pass in double over the buffer; with a coefficient of 1 torch's multiplication is the
-  // identity, so it is skipped.
-  const float* gradient = gradients_.data_ptr<float>();
+  // Σ g² in double over float partial sums of short blocks: as accurate as a double loop for
+  // this purpose, and vectorised. A coefficient of 1 or more leaves the gradients as they are
+  // (torch multiplies by exactly 1).
+  constexpr int64_t kBlock = 256;
+  Eigen::Map<Eigen::VectorXf> gradient(gradients_.data_ptr<float>(), gradients_.numel());
   double sum_of_squares = 0.0;
-  for (int64_t i = 0; i < gradients_.numel(); ++i) {
-    sum_of_squares += static_cast<double>(gradient[i]) * gradient[i];
+  for (int64_t start = 0; start < gradient.size(); start += kBlock) {
+    sum_of_squares +=
+        gradient.segment(start, std::min(kBlock, gradient.size() - start)).squaredNorm();
   }
   const double norm = std::sqrt(sum_of_squares);
   const double coefficient = max_norm / (norm + 1e-6);
-  if (coefficient < 1.0) gradients_.mul_(coefficient);
+  if (coefficient < 1.0) gradient *= static_cast<float>(coefficient);
   return norm;
 }
 

@@ -14,7 +14,9 @@ namespace tendril::rl {
 // "Proximal Policy Optimization Algorithms"), as Stable-Baselines3 implements it: one Adam
 // optimizer over policy and value parameters, `n_epochs` passes of shuffled minibatches over
 // each rollout. The parameters live in one flat buffer (nn::FlatAdam), so gradient clipping and
-// the Adam step cost a few whole-buffer operations per minibatch.
+// the Adam step cost a few whole-buffer operations per minibatch; the minibatch's forward and
+// backward passes are written out by hand over that buffer (nn::DenseActorCritic, ppo_loss),
+// which makes an update a handful of small matrix products instead of LibTorch dispatches.
 class Ppo : public OnPolicyAlgorithm {
  public:
   Ppo(envs::VecEnv& env, const PpoConfig& config, uint64_t seed);
