@@ -21,10 +21,18 @@ void Adam::step(Eigen::Ref<Eigen::VectorXf> parameters,
   const auto step_size = static_cast<float>(options_.learning_rate / correction1);
   const auto root_correction2 = static_cast<float>(std::sqrt(correction2));
   const auto epsilon = static_cast<float>(options_.epsilon);
-  first_moment_ = beta1 * first_moment_ + (1.0f - beta1) * gradient;
-  second_moment_ = beta2 * second_moment_ + (1.0f - beta2) * gradient.cwiseAbs2();
-  parameters.array() -= step_size * first_moment_.array() /
-                        (second_moment_.array().sqrt() / root_correction2 + epsilon);
+  // One fused pass over the three buffers (the update is memory-bound at these sizes).
+  float* theta = parameters.data();
+  const float* g = gradient.data();
+  float* m = first_moment_.data();
+  float* v = second_moment_.data();
+  const Eigen::Index n = parameters.size();
+#pragma omp simd
+  for (Eigen::Index i = 0; i < n; ++i) {
+    m[i] = beta1 * m[i] + (1.0f - beta1) * g[i];
+    v[i] = beta2 * v[i] + (1.0f - beta2) * g[i] * g[i];
+    theta[i] -= step_size * m[i] / (std::sqrt(v[i]) / root_correction2 + epsilon);
+  }
 }
 
 void Adam::set_state(int64_t steps, const Eigen::VectorXf& first_moment,

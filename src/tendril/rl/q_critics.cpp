@@ -1,5 +1,7 @@
 #include "tendril/rl/q_critics.hpp"
 
+#include <algorithm>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::rl {
@@ -28,9 +30,10 @@ QCritics::QCritics(int count, int64_t observation_size, int64_t action_size,
   scratch_.resize(count);
 }
 
-void QCritics::forward(const Eigen::MatrixXf& inputs, bool target) {
-  values_.resize(count(), inputs.cols());
-  for (int i = 0; i < count(); ++i) {
+void QCritics::forward(const Eigen::MatrixXf& inputs, bool target, int first) {
+  const int used = first < 0 ? count() : std::min(first, count());
+  values_.resize(used, inputs.cols());
+  for (int i = 0; i < used; ++i) {
     networks_[i].forward(slice(target ? target_ : parameters_, i), inputs, tapes_[i]);
     values_.row(i) = tapes_[i].output();
   }
@@ -40,7 +43,9 @@ void QCritics::forward(const Eigen::MatrixXf& inputs, bool target) {
 void QCritics::backward(const Eigen::MatrixXf& value_gradient, bool parameters,
                         Eigen::MatrixXf* input_gradient) {
   require(!last_forward_target_, "no backward pass through the target critics", "rl::QCritics");
-  for (int i = 0; i < count(); ++i) {
+  require(value_gradient.rows() == values_.rows(),
+          "one gradient row per critic of the forward pass", "rl::QCritics");
+  for (int i = 0; i < static_cast<int>(values_.rows()); ++i) {
     Eigen::Ref<Eigen::VectorXf> gradient = parameters
                                                ? Eigen::Ref<Eigen::VectorXf>(gradient_.segment(
                                                      offsets_[i], networks_[i].parameter_count()))

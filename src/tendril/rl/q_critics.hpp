@@ -25,13 +25,14 @@ class QCritics {
   int count() const { return static_cast<int>(networks_.size()); }
 
   // Q_i of each column of `inputs` ((observation + action) × batch) with the online or the
-  // target parameters, as rows of `values()` (count × batch).
-  void forward(const Eigen::MatrixXf& inputs, bool target);
+  // target parameters, as rows of `values()` (count × batch) — of the first `first` critics
+  // only when given (TD3's actor needs Q_1 alone).
+  void forward(const Eigen::MatrixXf& inputs, bool target, int first = -1);
   const Eigen::MatrixXf& values() const { return values_; }
 
-  // Back-propagates ∂L/∂Q (count × batch) through the last `forward`: adds ∂L/∂parameters to
-  // `gradient()` when `parameters` is true, and writes Σ_i ∂L/∂inputs to `input_gradient` when
-  // given (for the actor's update through the critics).
+  // Back-propagates ∂L/∂Q (one row per critic of the last `forward`) through it: adds
+  // ∂L/∂parameters to `gradient()` when `parameters` is true, and writes Σ_i ∂L/∂inputs to
+  // `input_gradient` when given (for the actor's update through the critics).
   void backward(const Eigen::MatrixXf& value_gradient, bool parameters,
                 Eigen::MatrixXf* input_gradient);
 

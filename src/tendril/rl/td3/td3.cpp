@@ -86,10 +86,9 @@ TrainStats Td3::train(int64_t gradient_steps, double progress_remaining) {
     if (gradient_updates() % config_.policy_delay != 0) continue;
     actor_.forward(actor_parameters_, batch_.observations, actor_tape_);
     concatenate_rows(batch_.observations, actor_tape_.output(), critic_inputs_);
-    critics_.forward(critic_inputs_, /*target=*/false);
+    critics_.forward(critic_inputs_, /*target=*/false, /*first=*/1);
     actor_loss_sum += -static_cast<double>(critics_.values().row(0).mean());
-    value_gradient_.setZero(critics_.count(), batch_size);
-    value_gradient_.row(0).setConstant(-inverse_batch);
+    value_gradient_.setConstant(1, batch_size, -inverse_batch);
     critics_.backward(value_gradient_, /*parameters=*/false, &input_gradient_);
     actor_.backward(actor_parameters_, actor_tape_, input_gradient_.bottomRows(action_size()),
                     actor_gradient_, nullptr, actor_scratch_);
