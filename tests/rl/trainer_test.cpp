@@ -193,6 +193,11 @@ std::string error_of(const std::string& yaml) {
 TEST(Experiment, BadFilesAreRejectedByName) {
   const std::string base = "algorithm: ppo\nenv: {id: Pendulum-v1}\nn_timesteps: 100\n";
   EXPECT_EQ(error_of(base), "accepted");
+  // The environment's own parameters are keys of the file too.
+  EXPECT_EQ(
+      error_of("algorithm: sac\nenv: {id: Pendulum-v1, params: {g: 9.81, max_episode_steps: 50}}\n"
+               "n_timesteps: 100\n"),
+      "accepted");
   EXPECT_EQ(error_of(base + "n_envs: 4\n"), "bad.yaml: unknown key 'n_envs'");
   EXPECT_NE(error_of("algorithm: a2c\nenv: {id: Pendulum-v1}\nn_timesteps: 1\n")
                 .find("unknown algorithm 'a2c'"),

@@ -67,12 +67,13 @@ Experiment Experiment::from_config(Config config) {
   } else {
     e.env.reward_gamma = DqnConfig::from_config(e.algo).common.gamma;
   }
-  config.reject_unknown();
   // The algorithm on one copy of the environment: an action space it cannot handle (DQN on a
   // Box, SAC on unbounded actions) is refused here. (A replay buffer's memory is reserved, not
   // touched, so this costs little.)
   auto probe = make_vec_env(VecEnvOptions{e.env.id, e.env.params, 1, 1, false, false, 0.99});
   make_algorithm(e, *probe);
+  // Last: the environment's own parameters are read by the environment.
+  config.reject_unknown();
   return e;
 }
 
