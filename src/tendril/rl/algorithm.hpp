@@ -41,9 +41,14 @@ class Algorithm {
   // continue the count; schedules anneal over `total_timesteps`).
   virtual void learn(int64_t total_timesteps, const Callback& callback) = 0;
 
-  // The policy's action for one observation (the mode when `deterministic`), in the
-  // environment's action space.
-  virtual Action predict(const Observation& observation, bool deterministic) = 0;
+  // The policy's actions for a batch (one row per observation, one row per action), the mode
+  // when `deterministic`, in the environment's action space.
+  virtual envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic) = 0;
+  // The same for one observation.
+  Action predict(const Observation& observation, bool deterministic) {
+    const envs::BatchMatrix batch = observation.transpose();
+    return predict(batch, deterministic).row(0).transpose();
+  }
 
   // Everything needed to resume — weights, optimizer state, RNG states, counters, normalizer
   // statistics — written atomically. `load` restores a checkpoint of the same algorithm and
@@ -59,5 +64,8 @@ class Algorithm {
   virtual int64_t num_timesteps() const = 0;
   virtual const std::string& name() const = 0;
 };
+
+// Raises Error naming `where` unless `observations` has `size` finite components per row.
+void check_observations(const envs::BatchMatrix& observations, int size, const std::string& where);
 
 }  // namespace tendril::rl

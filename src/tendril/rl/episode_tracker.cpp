@@ -38,6 +38,12 @@ void EpisodeTracker::record(const envs::VecStep& step) {
 double EpisodeTracker::mean_return() const { return mean(returns_); }
 double EpisodeTracker::mean_length() const { return mean(lengths_); }
 
+void EpisodeTracker::report(Progress& progress) const {
+  progress.episodes = episodes_;
+  progress.episode_return_mean = mean_return();
+  progress.episode_length_mean = mean_length();
+}
+
 void EpisodeTracker::save(CheckpointWriter& writer) const {
   writer.write_int("episodes", episodes_);
   writer.write_doubles("recent_returns", std::vector<double>(returns_.begin(), returns_.end()));

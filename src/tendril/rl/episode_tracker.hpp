@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/rl/algorithm.hpp"
 #include "tendril/rl/checkpoint.hpp"
 
 namespace tendril::rl {
@@ -20,6 +21,8 @@ class EpisodeTracker {
   double mean_length() const;
   // Oldest first.
   const std::deque<double>& recent_returns() const { return returns_; }
+  // Fills the episode fields of `progress`.
+  void report(Progress& progress) const;
 
   void save(CheckpointWriter& writer) const;
   // Reads the saved state; the returned action installs it (run once every read succeeded).

@@ -32,9 +32,9 @@ class OffPolicyAlgorithm : public Algorithm {
   OffPolicyAlgorithm& operator=(const OffPolicyAlgorithm&) = delete;
 
   void learn(int64_t total_timesteps, const Callback& callback = {}) override;
-  Action predict(const Observation& observation, bool deterministic) override;
   // One row per observation in, one row per action out (env units).
-  envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic);
+  envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic) override;
+  using Algorithm::predict;
 
   void save(const std::filesystem::path& file) const override;
   void load(const std::filesystem::path& file) override;

@@ -118,26 +118,15 @@ void OnPolicyAlgorithm::learn(int64_t total_timesteps, const Callback& callback)
 
     progress.timesteps = num_timesteps_;
     progress.iterations = iterations_;
-    progress.episodes = episodes_.episodes();
-    progress.episode_return_mean = episodes_.mean_return();
-    progress.episode_length_mean = episodes_.mean_length();
+    episodes_.report(progress);
     if (callback && !callback(progress)) break;
   }
-}
-
-Action OnPolicyAlgorithm::predict(const Observation& observation, bool deterministic) {
-  envs::BatchMatrix batch = observation.transpose();
-  return predict(batch, deterministic).row(0).transpose();
 }
 
 envs::BatchMatrix OnPolicyAlgorithm::predict(const envs::BatchMatrix& observations,
                                              bool deterministic) {
   const auto observation_size = env_.observation_space().size();
-  require(observations.cols() == observation_size,
-          "observations have " + std::to_string(observations.cols()) + " components, expected " +
-              std::to_string(observation_size),
-          name_ + "::predict");
-  require(observations.allFinite(), "observations are not finite", name_ + "::predict");
+  check_observations(observations, static_cast<int>(observation_size), name_ + "::predict");
   const Eigen::Map<const Eigen::MatrixXf> columns(observations.data(), observation_size,
                                                   observations.rows());
   Eigen::MatrixXf actions;

@@ -36,11 +36,9 @@ class OnPolicyAlgorithm : public Algorithm {
 
   void learn(int64_t total_timesteps, const Callback& callback = {}) override;
 
-  // The policy's action for one observation: the mode when `deterministic`, else a sample
-  // from a dedicated stream. Box actions are clipped to the action space's finite bounds.
-  Action predict(const Observation& observation, bool deterministic) override;
   // The same for a batch (one row per observation, one row per action).
-  envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic);
+  envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic) override;
+  using Algorithm::predict;
 
   void save(const std::filesystem::path& file) const override;
   void load(const std::filesystem::path& file) override;
