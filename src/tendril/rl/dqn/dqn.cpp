@@ -1,7 +1,6 @@
 #include "tendril/rl/dqn/dqn.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "tendril/core/error.hpp"
 
@@ -64,52 +63,23 @@ void Dqn::after_step() {
 
 TrainStats Dqn::train(int64_t gradient_steps, double progress_remaining) {
   const double learning_rate = config_.common.learning_rate.at(progress_remaining);
-  const int64_t batch_size = config_.common.batch_size;
-  const auto inverse_batch = 1.0f / static_cast<float>(batch_size);
-  const auto gamma = static_cast<float>(config_.common.gamma);
+  optimizer_.set_learning_rate(learning_rate);
   double loss_sum = 0.0;
   for (int64_t step = 0; step < gradient_steps; ++step) {
     count_update();
-    buffer().sample(batch_size, sample_rng(), batch_);
-    // y = r + γ (1 − d) Q̄(s', a'), a' = argmax Q̄(s', ·) — or argmax Q(s', ·) for double DQN.
-    q_network_.forward(target_, batch_.next_observations, next_tape_);
-    Eigen::VectorXf next_values(batch_size);
-    if (config_.double_q) {
-      q_network_.forward(parameters_, batch_.next_observations, tape_);
-      for (int64_t i = 0; i < batch_size; ++i) {
-        Eigen::Index best;
-        tape_.output().col(i).maxCoeff(&best);
-        next_values[i] = next_tape_.output()(best, i);
-      }
-    } else {
-      next_values = next_tape_.output().colwise().maxCoeff().transpose();
-    }
-    const Eigen::VectorXf targets =
-        (batch_.rewards.array() + gamma * (1.0f - batch_.terminated.array()) * next_values.array())
-            .matrix();
-
-    // Huber loss (smooth L1, δ = 1) between Q(s, a) and y, averaged over the batch.
-    q_network_.forward(parameters_, batch_.observations, tape_);
-    output_gradient_.setZero(actions_count_, batch_size);
-    for (int64_t i = 0; i < batch_size; ++i) {
-      const auto action = static_cast<Eigen::Index>(batch_.actions(0, i));
-      const float error = tape_.output()(action, i) - targets[i];
-      const float magnitude = std::abs(error);
-      loss_sum += magnitude < 1.0f ? 0.5 * error * error : magnitude - 0.5;
-      output_gradient_(action, i) = std::clamp(error, -1.0f, 1.0f) * inverse_batch;
-    }
-    q_network_.backward(parameters_, tape_, output_gradient_, gradient_, nullptr, scratch_);
+    buffer().sample(config_.common.batch_size, sample_rng(), batch_);
+    gradient_.setZero();
+    loss_sum += dqn_loss(q_network_, parameters_, target_, batch_, config_.common.gamma,
+                         config_.double_q, loss_workspace_, gradient_);
     if (config_.max_grad_norm) {
       // torch.nn.utils.clip_grad_norm_: scale by max / (‖g‖ + 1e-6) when that is below 1.
       const double norm = gradient_.norm();
       const double scale = *config_.max_grad_norm / (norm + 1e-6);
       if (scale < 1.0) gradient_ *= static_cast<float>(scale);
     }
-    optimizer_.set_learning_rate(learning_rate);
     optimizer_.step(parameters_, gradient_);
-    gradient_.setZero();
   }
-  return {{"train/loss", loss_sum / static_cast<double>(gradient_steps * batch_size)},
+  return {{"train/loss", loss_sum / static_cast<double>(gradient_steps)},
           {"train/learning_rate", learning_rate},
           {"rollout/exploration_rate", exploration_rate_}};
 }

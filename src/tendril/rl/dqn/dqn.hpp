@@ -6,6 +6,7 @@
 #include "tendril/nn/dense_mlp.hpp"
 #include "tendril/rl/adam_checkpoint.hpp"
 #include "tendril/rl/dqn/dqn_config.hpp"
+#include "tendril/rl/dqn/dqn_loss.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
 
 namespace tendril::rl {
@@ -39,9 +40,8 @@ class Dqn : public OffPolicyAlgorithm {
   double exploration_rate_ = 1.0;
 
   ReplayBuffer::Batch batch_;
-  nn::DenseMlp::Tape tape_, next_tape_;
-  Eigen::MatrixXf output_gradient_;
-  std::vector<Eigen::MatrixXf> scratch_;
+  nn::DenseMlp::Tape tape_;  // of the acting forward pass
+  DqnLossWorkspace loss_workspace_;
 };
 
 }  // namespace tendril::rl
