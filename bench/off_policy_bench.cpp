@@ -6,7 +6,9 @@
 // same passes through LibTorch autograd (one thread), as a reference for the kernels.
 //
 // Two sizes: SB3's SAC defaults (256×256 networks, batch 256) and small networks (64×64,
-// batch 100).
+// batch 100), each with the networks' products on one and on two threads (`learner_threads`;
+// the environment runs in the calling thread, so the second core is free). The LibTorch
+// reference always runs on one thread, as SB3 runs best.
 //
 //   build/bench/off_policy_bench [repeats]      (default 3; medians are reported)
 #include <torch/torch.h>
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "tendril/nn/blas.hpp"
 #include "tendril/nn/dense_mlp.hpp"
 #include "tendril/nn/threads.hpp"
 #include "tendril/rl/sac/sac.hpp"
@@ -44,6 +47,7 @@ struct Case {
   int64_t hidden;
   int64_t batch;
   int64_t measured_steps;
+  int threads;  // learner_threads
 };
 
 constexpr int64_t kObservations = 3, kActions = 1;  // Pendulum-v1
@@ -51,7 +55,8 @@ constexpr int64_t kWarmup = 1000;                   // steps before the measurem
 
 std::string algo_yaml(const Case& c) {
   return "learning_starts: 100\nbatch_size: " + std::to_string(c.batch) + "\nnet_arch: [" +
-         std::to_string(c.hidden) + ", " + std::to_string(c.hidden) + "]\nlog_interval: 100\n";
+         std::to_string(c.hidden) + ", " + std::to_string(c.hidden) +
+         "]\nlog_interval: 100\nlearner_threads: " + std::to_string(c.threads) + "\n";
 }
 
 struct LoopFigures {
@@ -88,6 +93,7 @@ LoopFigures train_loop(const Case& c) {
 // them. Returns seconds per gradient step.
 double bare_passes(const Case& c, int64_t steps) {
   using nn::DenseMlp;
+  nn::set_blas_threads(c.threads);
   const bool sac = c.algorithm == "sac";
   const DenseMlp actor({kObservations, c.hidden, c.hidden, sac ? 2 * kActions : kActions},
                        nn::Activation::kRelu, /*tanh_output=*/!sac);
@@ -135,6 +141,7 @@ double bare_passes(const Case& c, int64_t steps) {
 
 // The same passes through LibTorch modules and autograd (SB3's computation without Python).
 double libtorch_passes(const Case& c, int64_t steps) {
+  nn::use_one_torch_thread();
   const bool sac = c.algorithm == "sac";
   const auto mlp = [&](int64_t in, int64_t out) {
     return torch::nn::Sequential(torch::nn::Linear(in, c.hidden), torch::nn::ReLU(),
@@ -174,18 +181,19 @@ double libtorch_passes(const Case& c, int64_t steps) {
 
 int run(int repeats) {
   nn::use_one_torch_thread();
-  const std::vector<Case> cases{{"sac", 256, 256, 400},
-                                {"td3", 256, 256, 600},
-                                {"sac", 64, 100, 6000},
-                                {"td3", 64, 100, 8000}};
+  const std::vector<Case> cases{{"sac", 256, 256, 400, 1}, {"sac", 256, 256, 600, 2},
+                                {"td3", 256, 256, 600, 1}, {"td3", 256, 256, 900, 2},
+                                {"sac", 64, 100, 6000, 1}, {"sac", 64, 100, 6000, 2},
+                                {"td3", 64, 100, 8000, 1}, {"td3", 64, 100, 8000, 2}};
   std::printf(
       "Off-policy training on Pendulum-v1, 1 env, 1 gradient step per env step; medians of %d "
       "runs\n\n",
       repeats);
   std::printf(
-      "| algorithm | networks, batch | loop steps/s | bound steps/s (bare passes) | loop / bound | "
+      "| algorithm | networks, batch | learner threads | loop steps/s | bound steps/s (bare "
+      "passes) | loop / bound | "
       "LibTorch passes steps/s | loop: env s | inference s | update s |\n");
-  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const Case& c : cases) {
     std::vector<double> loop_rates, bound_rates, torch_rates, env, inference, update;
     for (int r = 0; r < repeats; ++r) {
@@ -198,9 +206,9 @@ int run(int repeats) {
       bound_rates.push_back(1.0 / bare_passes(c, bare_steps));
       torch_rates.push_back(1.0 / libtorch_passes(c, bare_steps));
     }
-    std::printf("| %s | %lldx%lld, %lld | %.0f | %.0f | %.2f | %.0f | %.2f | %.2f | %.2f |\n",
+    std::printf("| %s | %lldx%lld, %lld | %d | %.0f | %.0f | %.2f | %.0f | %.2f | %.2f | %.2f |\n",
                 c.algorithm == "sac" ? "SAC" : "TD3", static_cast<long long>(c.hidden),
-                static_cast<long long>(c.hidden), static_cast<long long>(c.batch),
+                static_cast<long long>(c.hidden), static_cast<long long>(c.batch), c.threads,
                 median(loop_rates), median(bound_rates), median(loop_rates) / median(bound_rates),
                 median(torch_rates), median(env), median(inference), median(update));
     std::fflush(stdout);

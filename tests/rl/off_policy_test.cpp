@@ -204,6 +204,21 @@ TEST_P(EveryAlgorithm, CorruptCheckpointChangesNothing) {
 INSTANTIATE_TEST_SUITE_P(OffPolicy, EveryAlgorithm,
                          ::testing::Values("sac", "sac_sde", "td3", "ddpg", "dqn"));
 
+TEST(OffPolicyThreads, TwoLearnerThreadsRepeatTheRunExactly) {
+  // Networks and batch large enough that OpenBLAS splits the products between the threads.
+  const std::string algo =
+      "learning_starts: 100\nbatch_size: 128\nnet_arch: [256, 256]\nlog_interval: 100\n"
+      "learner_threads: 2\n";
+  std::vector<envs::BatchMatrix> actions;
+  for (int run = 0; run < 2; ++run) {
+    auto env = vec_env("Pendulum-v1", "");
+    auto sac = make("sac", *env, algo, 11);
+    sac->learn(300);
+    actions.push_back(probe(*sac, env->observation_space().size()));
+  }
+  EXPECT_EQ(actions[0], actions[1]);
+}
+
 TEST(OffPolicyBuffer, TruncatedEpisodesAreStoredAsNotTerminatedWithTheirFinalObservation) {
   auto env = vec_env("Pendulum-v1", "max_episode_steps: 50");
   Sac sac(*env, SacConfig::from_config(Config::parse("learning_starts: 1000\n")), 0);
@@ -297,6 +312,10 @@ TEST(OffPolicyBadInput, ConfigErrorsNameTheKey) {
   EXPECT_NE(testing::error_message([] {
               DqnConfig::from_config(Config::parse("polyak: 1"));
             }).find("polyak"),
+            std::string::npos);
+  EXPECT_NE(testing::error_message([] {
+              SacConfig::from_config(Config::parse("learner_threads: 0"));
+            }).find("learner_threads"),
             std::string::npos);
   // DDPG has no TD3-only keys.
   EXPECT_NE(testing::error_message([] {

@@ -5,14 +5,12 @@
 #include <utility>
 
 #include "tendril/core/error.hpp"
+#include "tendril/nn/blas.hpp"
 
 namespace tendril::nn {
 
 namespace {
 
-using RowMajorMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-using ConstWeightMap = Eigen::Map<const RowMajorMatrix>;
-using WeightMap = Eigen::Map<RowMajorMatrix>;
 using ConstVectorMap = Eigen::Map<const Eigen::VectorXf>;
 
 void activate(Activation activation, Eigen::MatrixXf& values) {
@@ -72,12 +70,11 @@ void DenseMlp::forward(const Eigen::Ref<const Eigen::VectorXf>& parameters,
   for (std::size_t layer = 0; layer + 1 < sizes_.size(); ++layer) {
     const int64_t in = sizes_[layer];
     const int64_t out = sizes_[layer + 1];
-    const ConstWeightMap weight(data + offsets_[layer], out, in);
+    const ConstRowMajorMap weight(data + offsets_[layer], out, in);
     const ConstVectorMap bias(data + offsets_[layer] + out * in, out);
     const Eigen::MatrixXf& x = layer == 0 ? tape.input : tape.outputs[layer - 1];
     Eigen::MatrixXf& y = tape.outputs[layer];
-    y.resize(out, x.cols());
-    y.noalias() = weight * x;
+    multiply(weight, x, y);
     y.colwise() += bias;
     const bool last = layer + 2 == sizes_.size();
     if (!last || activated_output_) {
@@ -112,20 +109,18 @@ void DenseMlp::backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, con
     const Eigen::MatrixXf& x = layer == 0 ? tape.input : tape.outputs[layer - 1];
     const Eigen::MatrixXf& delta = scratch[layer];
     if (gradient != nullptr) {
-      WeightMap weight_gradient(gradient + offsets_[layer], out, in);
+      RowMajorMap weight_gradient(gradient + offsets_[layer], out, in);
       Eigen::Map<Eigen::VectorXf> bias_gradient(gradient + offsets_[layer] + out * in, out);
-      weight_gradient.noalias() += delta * x.transpose();
+      add_outer_products(delta, x, weight_gradient);
       bias_gradient += delta.rowwise().sum();
     }
-    const ConstWeightMap weight(data + offsets_[layer], out, in);
+    const ConstRowMajorMap weight(data + offsets_[layer], out, in);
     if (layer > 0) {
       Eigen::MatrixXf& previous = scratch[layer - 1];
-      previous.resize(in, delta.cols());
-      previous.noalias() = weight.transpose() * delta;
+      multiply_transposed(weight, delta, previous);
       scale_by_derivative(hidden_, tape.outputs[layer - 1], previous);
     } else if (input_gradient != nullptr) {
-      input_gradient->resize(in, delta.cols());
-      input_gradient->noalias() = weight.transpose() * delta;
+      multiply_transposed(weight, delta, *input_gradient);
     }
   }
 }

@@ -13,8 +13,8 @@ namespace tendril::nn {
 // Eigen matrices, with every weight in one flat float vector owned by the caller. The
 // off-policy algorithms use it for all their networks: with the small networks of continuous
 // control a LibTorch call costs ~10 µs of dispatch whatever its size, which would dominate an
-// update of a 64×64 network; here an update is a handful of matrix products. A flat vector
-// also makes Adam, Polyak averaging and checkpoints whole-vector operations.
+// update of a 64×64 network; here an update is a handful of matrix products (nn/blas). A flat
+// vector also makes Adam, Polyak averaging and checkpoints whole-vector operations.
 //
 // Batches are matrices with one column per sample (features × batch). Parameters are laid out
 // layer after layer, each as its weight (out × in, row-major) followed by its bias: the memory

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "tendril/core/error.hpp"
+#include "tendril/nn/blas.hpp"
 #include "tendril/rl/normalizer_state.hpp"
 
 namespace tendril::rl {
@@ -114,6 +115,7 @@ void OffPolicyAlgorithm::collect(Progress& progress) {
 
 void OffPolicyAlgorithm::learn(int64_t total_timesteps, const Callback& callback) {
   total_timesteps_ = std::max<int64_t>(total_timesteps, 1);
+  nn::set_blas_threads(common_.learner_threads);
   while (num_timesteps_ < total_timesteps) {
     Progress progress;
     const int64_t block_start = num_timesteps_;

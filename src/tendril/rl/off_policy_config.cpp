@@ -22,6 +22,7 @@ void OffPolicyConfig::read(const Config& algo) {
                                       algo.source() + ": " + algo.path() + ".activation");
   }
   log_interval = algo.get_or<int64_t>("log_interval", log_interval);
+  learner_threads = algo.get_or<int>("learner_threads", learner_threads);
 }
 
 void OffPolicyConfig::validate(const std::string& where) const {
@@ -38,6 +39,7 @@ void OffPolicyConfig::validate(const std::string& where) const {
   };
   require(positive(net_arch) && positive(qf_net_arch), "layer sizes must be positive", where);
   require(log_interval >= 1, "log_interval must be at least 1", where);
+  require(learner_threads >= 1, "learner_threads must be at least 1", where);
 }
 
 std::string read_preset(const Config& algo, const std::vector<std::string>& known,
