@@ -13,15 +13,21 @@
 namespace tendril::apps {
 
 int eval_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"episodes", "seed"}, {"deterministic"});
+  const CommandLine line =
+      CommandLine::parse(args, {"episodes", "seed"}, {"deterministic", "best"});
   require(line.positional.size() == 1, "expected one run directory", "command line");
   const std::filesystem::path run = line.positional.front();
   require(std::filesystem::exists(run / "config.yaml"), "not a run directory (no config.yaml)",
           run.string());
   const rl::Experiment experiment =
       rl::Experiment::from_config(Config::load_file(run / "config.yaml"));
-  const std::filesystem::path model =
+  std::filesystem::path model =
       std::filesystem::exists(run / "model.pt") ? run / "model.pt" : rl::latest_checkpoint(run);
+  if (line.has("best")) {
+    model = run / "best_model.pt";
+    require(std::filesystem::exists(model), "no best_model.pt (the run's eval.save_best is off)",
+            run.string());
+  }
   int episodes = 10;
   uint64_t seed = 0;
   try {

@@ -19,8 +19,8 @@ commands:
   train --resume <run-dir>
       Train a controller; write the run directory (config, progress.csv, TensorBoard events,
       eval.csv, checkpoints/, model.pt). --stop-at pauses at the first checkpoint past STEPS.
-  eval <run-dir> [--episodes N] [--deterministic] [--seed S]
-      Evaluate a run's model (model.pt, else its newest checkpoint).
+  eval <run-dir> [--episodes N] [--deterministic] [--seed S] [--best]
+      Evaluate a run's model (model.pt, else its newest checkpoint; --best: best_model.pt).
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.

@@ -12,6 +12,8 @@
 
 #include "support/error_message.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/rl/evaluation.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
 
 namespace tendril::rl {
 namespace {
@@ -108,6 +110,68 @@ TEST(Trainer, ResumedRunEqualsTheUninterruptedRun) {
   EXPECT_EQ(second.final_eval_mean, reference.final_eval_mean);
   EXPECT_EQ(deterministic_progress(paused), deterministic_progress(whole));
   EXPECT_EQ(read_text(paused / "eval.csv"), read_text(whole / "eval.csv"));
+}
+
+// The rows of eval.csv as (timesteps, mean return).
+std::vector<std::pair<int64_t, double>> evaluations(const fs::path& run) {
+  std::ifstream in(run / "eval.csv");
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::pair<int64_t, double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::string timesteps, mean;
+    std::getline(cells, timesteps, ',');
+    std::getline(cells, mean, ',');
+    rows.emplace_back(std::stoll(timesteps), std::stod(mean));
+  }
+  return rows;
+}
+
+Experiment experiment_saving_best() {
+  Config config = Config::parse(kExperiment, "test.yaml");
+  config.set("eval.save_best", "true");
+  config.set("eval.freq", "512");
+  config.set("checkpoint_freq", "512");
+  return Experiment::from_config(config);
+}
+
+TEST(Trainer, SaveBestKeepsTheModelOfTheBestEvaluation) {
+  const fs::path run = fresh("best");
+  const TrainResult result =
+      train(experiment_saving_best(), run, {.stop_at = std::nullopt, .quiet = true});
+  const auto rows = evaluations(run);
+  ASSERT_EQ(rows.size(), 4u);  // 512, 1024, 1536 and the end
+  const auto best = *std::max_element(
+      rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  ASSERT_TRUE(result.best_eval_mean.has_value());
+  EXPECT_EQ(*result.best_eval_mean, best.second);  // eval.csv holds the exact value
+  EXPECT_EQ(result.best_eval_timesteps, best.first);
+
+  // best_model.pt, loaded anew (with its normalization statistics), repeats that evaluation.
+  const Experiment e = experiment_saving_best();
+  auto env = make_vec_env(e.env);
+  auto algorithm = make_algorithm(e, *env);
+  algorithm->load(run / "best_model.pt");
+  EXPECT_EQ(algorithm->num_timesteps(), best.first);
+  const auto evaluation_env = make_evaluation_env(e.env, *env);
+  const EvaluationResult again = evaluate_policy(*algorithm, *evaluation_env, e.eval_episodes, true,
+                                                 e.seed + 1000003 + best.first);
+  EXPECT_EQ(again.mean_return(), best.second);
+}
+
+TEST(Trainer, ResumedRunRemembersItsBestEvaluation) {
+  const fs::path whole = fresh("best_whole"), paused = fresh("best_paused");
+  const TrainResult reference =
+      train(experiment_saving_best(), whole, {.stop_at = std::nullopt, .quiet = true});
+  // Paused after the evaluation at 1536 steps, the best of this run (checked below): the
+  // resumed run must remember it, not take the worse evaluation at 2048 as its first.
+  train(experiment_saving_best(), paused, {.stop_at = 1500, .quiet = true});
+  const TrainResult resumed = resume(paused, {.stop_at = std::nullopt, .quiet = true});
+  EXPECT_EQ(resumed.best_eval_mean, reference.best_eval_mean);
+  EXPECT_EQ(resumed.best_eval_timesteps, reference.best_eval_timesteps);
+  EXPECT_EQ(reference.best_eval_timesteps, 1536);
+  EXPECT_EQ(read_text(paused / "best_model.pt"), read_text(whole / "best_model.pt"));
 }
 
 constexpr const char* kOffPolicyExperiment = R"(

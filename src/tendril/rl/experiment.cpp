@@ -47,6 +47,7 @@ Experiment Experiment::from_config(Config config) {
   e.eval_freq = eval.get_or<int64_t>("freq", 0);
   e.eval_episodes = eval.get_or<int>("episodes", 10);
   e.eval_deterministic = eval.get_or<bool>("deterministic", true);
+  e.eval_save_best = eval.get_or<bool>("save_best", false);
   require(e.eval_freq >= 0, "must be non-negative", key(eval, "freq"));
   require(e.eval_episodes >= 1, "must be at least 1", key(eval, "episodes"));
   e.checkpoint_freq = config.get_or<int64_t>("checkpoint_freq", 0);

@@ -26,7 +26,7 @@ namespace tendril::rl {
 //   algo: {...}                    # the algorithm's keys (preset + overrides)
 //   n_timesteps: 500000
 //   seed: 0
-//   eval: {freq: 50000, episodes: 10, deterministic: true}
+//   eval: {freq: 50000, episodes: 10, deterministic: true, save_best: false}
 //   checkpoint_freq: 100000        # environment steps between checkpoints; 0: none
 //   save_replay_buffer: false      # off-policy: keep the replay buffer with the checkpoint
 //   output: runs/ppo_pendulum      # where new runs go (a timestamp is appended)
@@ -42,6 +42,9 @@ struct Experiment {
   int64_t eval_freq = 0;
   int eval_episodes = 10;
   bool eval_deterministic = true;
+  // Keep the model of the best evaluation so far as best_model.pt (SB3's EvalCallback with a
+  // best-model path): value-based learners such as DQN can lose a solved task late in a run.
+  bool eval_save_best = false;
   int64_t checkpoint_freq = 0;
   bool save_replay_buffer = false;
   std::string output;

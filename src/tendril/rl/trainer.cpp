@@ -1,8 +1,11 @@
 #include "tendril/rl/trainer.hpp"
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <optional>
+#include <sstream>
 #include <string>
 
 #include "tendril/core/error.hpp"
@@ -16,6 +19,14 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+
+// The shortest decimal text that reads back as exactly `value`: a resumed run recalls its best
+// evaluation from eval.csv and must compare as the uninterrupted run does.
+std::string exact_text(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
 
 fs::path checkpoint_path(const fs::path& run, int64_t steps) {
   return run / "checkpoints" / ("step_" + std::to_string(steps) + ".pt");
@@ -69,6 +80,7 @@ class Run {
       }
     }
     last_timesteps_ = algorithm_->num_timesteps();
+    if (resuming && experiment_.eval_save_best) recall_best_evaluation();
   }
 
   TrainResult execute() {
@@ -87,6 +99,10 @@ class Run {
       result.final_eval_mean = final_eval.mean_return();
       result.final_eval_std = final_eval.std_return();
       algorithm_->save(directory_ / "model.pt");
+    }
+    if (best_eval_mean_) {
+      result.best_eval_mean = best_eval_mean_;
+      result.best_eval_timesteps = best_eval_timesteps_;
     }
     result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     result.steps_per_second = static_cast<double>(result.timesteps - first_step) / result.seconds;
@@ -146,10 +162,42 @@ class Run {
     double mean_length = 0.0;
     for (int64_t length : eval.lengths) mean_length += static_cast<double>(length);
     mean_length /= static_cast<double>(eval.lengths.size());
-    eval_file_ << timesteps << ',' << eval.mean_return() << ',' << eval.std_return() << ','
-               << mean_length << ',' << eval.returns.size() << '\n';
+    eval_file_ << timesteps << ',' << exact_text(eval.mean_return()) << ','
+               << exact_text(eval.std_return()) << ',' << mean_length << ',' << eval.returns.size()
+               << '\n';
     eval_file_.flush();
+    if (experiment_.eval_save_best &&
+        (!best_eval_mean_ || eval.mean_return() >= *best_eval_mean_)) {
+      algorithm_->save(directory_ / "best_model.pt");
+      best_eval_mean_ = eval.mean_return();
+      best_eval_timesteps_ = timesteps;
+    }
     return eval;
+  }
+
+  // On resume: the best evaluation up to the checkpoint, from eval.csv (rows past it, written
+  // before an interruption, are evaluated again).
+  void recall_best_evaluation() {
+    std::ifstream in(directory_ / "eval.csv");
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      std::stringstream cells(line);
+      std::string timesteps_cell, mean_cell;
+      std::getline(cells, timesteps_cell, ',');
+      std::getline(cells, mean_cell, ',');
+      try {
+        const int64_t timesteps = std::stoll(timesteps_cell);
+        const double mean = std::stod(mean_cell);
+        if (timesteps > last_timesteps_) continue;
+        if (!best_eval_mean_ || mean >= *best_eval_mean_) {
+          best_eval_mean_ = mean;
+          best_eval_timesteps_ = timesteps;
+        }
+      } catch (const std::exception&) {
+        throw Error("unreadable row '" + line + "'", (directory_ / "eval.csv").string());
+      }
+    }
   }
 
   void print_progress(const Progress& p, double fps, bool keep_going) {
@@ -178,6 +226,8 @@ class Run {
   Clock::time_point last_print_;
   int64_t last_timesteps_ = 0;  // at the previous progress report
   fs::path last_buffer_;
+  std::optional<double> best_eval_mean_;
+  int64_t best_eval_timesteps_ = 0;
 };
 
 }  // namespace

@@ -15,6 +15,8 @@ namespace tendril::rl {
 //   eval.csv          evaluation returns every `eval.freq` steps and at the end
 //   checkpoints/step_<N>.pt   everything needed to resume, every `checkpoint_freq` steps
 //   model.pt          the final model
+//   best_model.pt     with eval.save_best: the model of the best evaluation (highest mean
+//                     return; the latest of equals, which has trained longest)
 // and a live progress line on standard error.
 struct TrainOptions {
   // Stop after the first checkpoint at or past this many steps (a run paused on purpose; it
@@ -29,6 +31,8 @@ struct TrainResult {
   bool finished = false;         // reached n_timesteps
   double final_eval_mean = 0.0;  // of the last evaluation (when finished)
   double final_eval_std = 0.0;
+  std::optional<double> best_eval_mean;  // with eval.save_best: of best_model.pt
+  int64_t best_eval_timesteps = 0;
   double seconds = 0.0;
   double steps_per_second = 0.0;
 };
