@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/scratch_directory.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::rl {
@@ -12,14 +13,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class CheckpointTest : public ::testing::Test {
+class CheckpointTest : public testing::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    directory_ =
-        fs::temp_directory_path() / ("tendril_checkpoint_test_" + std::to_string(::getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
+  CheckpointTest() : ScratchDirectoryTest("checkpoint_test") {}
 
   void write_example(const fs::path& file, int64_t counter) {
     CheckpointWriter writer;
@@ -37,8 +33,6 @@ class CheckpointTest : public ::testing::Test {
     std::ifstream in(file, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
-
-  fs::path directory_;
 };
 
 TEST_F(CheckpointTest, RoundTripsEveryEntryType) {

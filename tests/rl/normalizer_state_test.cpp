@@ -1,12 +1,12 @@
 #include "tendril/rl/normalizer_state.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <string>
 
 #include "support/error_message.hpp"
+#include "support/scratch_directory.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
@@ -36,14 +36,9 @@ std::unique_ptr<envs::VecEnv> stepped(const VecEnvOptions& options) {
   return env;
 }
 
-class NormalizerStateTest : public ::testing::Test {
+class NormalizerStateTest : public testing::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    directory_ =
-        fs::temp_directory_path() / ("tendril_normalizer_state_test_" + std::to_string(::getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
+  NormalizerStateTest() : ScratchDirectoryTest("normalizer_state_test") {}
 
   fs::path save(const envs::VecEnv& env, const std::string& name) {
     const fs::path file = directory_ / name;
@@ -73,8 +68,6 @@ class NormalizerStateTest : public ::testing::Test {
     }
     return message;
   }
-
-  fs::path directory_;
 };
 
 TEST_F(NormalizerStateTest, SaveThenLoadRoundTripsExactly) {

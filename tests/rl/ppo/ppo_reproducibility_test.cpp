@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/scratch_directory.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/rl/ppo/ppo.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -46,14 +47,9 @@ envs::BatchMatrix probe_observations() {
   return observations;
 }
 
-class PpoReproducibility : public ::testing::Test {
+class PpoReproducibility : public testing::ScratchDirectoryTest {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() / ("tendril_ppo_test_" + std::to_string(::getpid()));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-  fs::path directory_;
+  PpoReproducibility() : ScratchDirectoryTest("ppo_test") {}
 };
 
 TEST_F(PpoReproducibility, SameSeedGivesIdenticalReturnsAndParameters) {
