@@ -15,31 +15,34 @@ int rows(const Eigen::Ref<const Eigen::MatrixXf>& m) { return static_cast<int>(m
 int cols(const Eigen::Ref<const Eigen::MatrixXf>& m) { return static_cast<int>(m.cols()); }
 int stride(const Eigen::Ref<const Eigen::MatrixXf>& m) { return static_cast<int>(m.outerStride()); }
 
-}  // namespace
-
 // A row-major out × in weight is, read column-major, its in × out transpose with leading
-// dimension `in`: the calls below pass it so and let BLAS transpose where needed.
+// dimension `in`: BLAS is told to transpose it back for weight · inputs and to take it as it is
+// for weightᵀ · inputs.
+void multiply_weight(bool transposed, const ConstRowMajorMap& weight,
+                     const Eigen::Ref<const Eigen::MatrixXf>& inputs, Eigen::MatrixXf& result,
+                     const char* where) {
+  const auto out = static_cast<int>(weight.rows());
+  const auto in = static_cast<int>(weight.cols());
+  const int result_rows = transposed ? in : out;
+  const int inner = transposed ? out : in;
+  require(rows(inputs) == inner, "inputs have the wrong number of rows", where);
+  result.resize(result_rows, inputs.cols());
+  if (result.size() == 0) return;
+  cblas_sgemm(CblasColMajor, transposed ? CblasNoTrans : CblasTrans, CblasNoTrans, result_rows,
+              cols(inputs), inner, 1.0f, weight.data(), in, inputs.data(), stride(inputs), 0.0f,
+              result.data(), result_rows);
+}
+
+}  // namespace
 
 void multiply(const ConstRowMajorMap& weight, const Eigen::Ref<const Eigen::MatrixXf>& inputs,
               Eigen::MatrixXf& result) {
-  const auto out = static_cast<int>(weight.rows());
-  const auto in = static_cast<int>(weight.cols());
-  require(rows(inputs) == in, "inputs have the wrong number of rows", "nn::multiply");
-  result.resize(out, inputs.cols());
-  if (result.size() == 0) return;
-  cblas_sgemm(CblasColMajor, CblasTrans, CblasNoTrans, out, cols(inputs), in, 1.0f, weight.data(),
-              in, inputs.data(), stride(inputs), 0.0f, result.data(), out);
+  multiply_weight(false, weight, inputs, result, "nn::multiply");
 }
 
 void multiply_transposed(const ConstRowMajorMap& weight,
                          const Eigen::Ref<const Eigen::MatrixXf>& inputs, Eigen::MatrixXf& result) {
-  const auto out = static_cast<int>(weight.rows());
-  const auto in = static_cast<int>(weight.cols());
-  require(rows(inputs) == out, "inputs have the wrong number of rows", "nn::multiply_transposed");
-  result.resize(in, inputs.cols());
-  if (result.size() == 0) return;
-  cblas_sgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, in, cols(inputs), out, 1.0f, weight.data(),
-              in, inputs.data(), stride(inputs), 0.0f, result.data(), in);
+  multiply_weight(true, weight, inputs, result, "nn::multiply_transposed");
 }
 
 void add_outer_products(const Eigen::Ref<const Eigen::MatrixXf>& left,
