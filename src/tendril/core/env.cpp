@@ -23,6 +23,14 @@ std::optional<double> Info::get(std::string_view name) const {
   return std::nullopt;
 }
 
+void Env::save_state(SnapshotWriter& /*out*/) const {
+  throw Error("this environment cannot save its state (no snapshot support)", "Env::save_state");
+}
+
+void Env::load_state(SnapshotReader& /*in*/) {
+  throw Error("this environment cannot load a state (no snapshot support)", "Env::load_state");
+}
+
 void check_action(const Space& action_space, const Action& action, std::string_view who) {
   if (action.size() != action_space.size()) {
     throw Error("action has " + std::to_string(action.size()) + " components, expected " +

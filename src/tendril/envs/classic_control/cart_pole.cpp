@@ -68,4 +68,23 @@ void CartPole::set_state(const Eigen::Vector4d& state) {
   terminated_ = false;
 }
 
+void CartPole::save_state(SnapshotWriter& out) const {
+  out.section("CartPole");
+  out.put(rng_);
+  out.put_matrix(state_);
+  out.put(terminated_);
+}
+
+void CartPole::load_state(SnapshotReader& in) {
+  in.section("CartPole");
+  Rng rng = rng_;
+  in.get(rng);
+  Eigen::Vector4d state = state_;
+  in.get_matrix(state);
+  const bool terminated = in.get_bool();
+  rng_ = rng;
+  state_ = state;
+  terminated_ = terminated;
+}
+
 }  // namespace tendril::envs

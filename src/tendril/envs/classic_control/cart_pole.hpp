@@ -45,6 +45,10 @@ class CartPole : public Env {
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   // Stepping on after termination gives reward 0, as in Gymnasium (call reset instead).
   Step step(const Action& action) override;
+  // The state, the random stream and the episode flags: exact snapshots.
+  bool supports_snapshots() const override { return true; }
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   void set_state(const Eigen::Vector4d& state);
   const Eigen::Vector4d& state() const { return state_; }

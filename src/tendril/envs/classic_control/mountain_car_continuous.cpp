@@ -54,4 +54,22 @@ void MountainCarContinuous::set_state(double position, double velocity) {
   velocity_ = velocity;
 }
 
+void MountainCarContinuous::save_state(SnapshotWriter& out) const {
+  out.section("MountainCarContinuous");
+  out.put(rng_);
+  out.put(static_cast<double>(position_));
+  out.put(static_cast<double>(velocity_));
+}
+
+void MountainCarContinuous::load_state(SnapshotReader& in) {
+  in.section("MountainCarContinuous");
+  Rng rng = rng_;
+  in.get(rng);
+  const auto position = static_cast<double>(in.get_double());
+  const auto velocity = static_cast<double>(in.get_double());
+  rng_ = rng;
+  position_ = position;
+  velocity_ = velocity;
+}
+
 }  // namespace tendril::envs

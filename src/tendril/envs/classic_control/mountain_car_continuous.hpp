@@ -42,6 +42,10 @@ class MountainCarContinuous : public Env {
   // Position ~ U(−0.6, −0.4), velocity 0.
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  // The state, the random stream and the episode flags: exact snapshots.
+  bool supports_snapshots() const override { return true; }
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   void set_state(double position, double velocity);
   double position() const { return position_; }

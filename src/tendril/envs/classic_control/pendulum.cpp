@@ -65,4 +65,22 @@ Observation Pendulum::observe() const {
                          static_cast<float>(theta_dot_));
 }
 
+void Pendulum::save_state(SnapshotWriter& out) const {
+  out.section("Pendulum");
+  out.put(rng_);
+  out.put(static_cast<double>(theta_));
+  out.put(static_cast<double>(theta_dot_));
+}
+
+void Pendulum::load_state(SnapshotReader& in) {
+  in.section("Pendulum");
+  Rng rng = rng_;
+  in.get(rng);
+  const auto theta = static_cast<double>(in.get_double());
+  const auto theta_dot = static_cast<double>(in.get_double());
+  rng_ = rng;
+  theta_ = theta;
+  theta_dot_ = theta_dot;
+}
+
 }  // namespace tendril::envs

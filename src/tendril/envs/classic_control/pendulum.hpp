@@ -40,6 +40,10 @@ class Pendulum : public Env {
   // θ ~ U(−π, π), θdot ~ U(−1, 1).
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  // The state, the random stream and the episode flags: exact snapshots.
+  bool supports_snapshots() const override { return true; }
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   // State access for tests and scripted starts.
   void set_state(double theta, double theta_dot);

@@ -90,6 +90,63 @@ void ElasticaArmEnv::write_obstacles(ObservationWriter& out) const {
   for (const physics::Cylinder& cylinder : obstacles_) out.obstacle(cylinder);
 }
 
+void ElasticaArmEnv::save_state(SnapshotWriter& out) const {
+  out.section(id_);
+  arm_.rod.save_state(out);
+  out.put_matrix(target_position_);
+  out.put(rng_);
+  out.put_matrix(muscle_targets_);
+  out.put_matrix(last_observation_);
+  out.put(last_distance_);
+  for (const auto& entry : info_.entries()) out.put(entry.second);
+  save_task_state(out);
+}
+
+void ElasticaArmEnv::load_state(SnapshotReader& in) {
+  in.section(id_);
+  // Everything is read into copies first; the rod restores itself all or nothing.
+  Snapshot rod_before;
+  SnapshotWriter rod_writer(rod_before);
+  arm_.rod.save_state(rod_writer);
+  arm_.rod.load_state(in);
+  try {
+    Eigen::Vector3d target = target_position_;
+    in.get_matrix(target);
+    Rng rng = rng_;
+    in.get(rng);
+    Eigen::VectorXd muscle_targets = muscle_targets_;
+    in.get_matrix(muscle_targets);
+    Observation last_observation = last_observation_;
+    in.get_matrix(last_observation);
+    const double last_distance = in.get_double();
+    Info info = info_;
+    for (const auto& entry : info_.entries()) info.set(entry.first, in.get_double());
+    load_task_state(in);
+    target_position_ = target;
+    rng_ = rng;
+    muscle_targets_ = std::move(muscle_targets);
+    last_observation_ = std::move(last_observation);
+    last_distance_ = last_distance;
+    info_ = std::move(info);
+  } catch (...) {
+    SnapshotReader restore(rod_before);
+    arm_.rod.load_state(restore);
+    throw;
+  }
+}
+
+bool ElasticaArmEnv::describe_scene(Scene& scene) const {
+  scene.time = rod().time();
+  const physics::RodState& state = rod().state();
+  scene.rods.push_back({"arm", node_positions(), state.radii});
+  scene.spheres.push_back({"target", target_position_, kTargetRadius});
+  for (const physics::Cylinder& cylinder : obstacles_) {
+    scene.cylinders.push_back({"obstacle", cylinder.start, cylinder.end(), cylinder.radius, false});
+  }
+  scene.values.emplace_back("distance", last_distance_);
+  return true;
+}
+
 Eigen::Matrix3Xd ElasticaArmEnv::node_positions() const {
   return rod().sampled_node_positions(rod().n_elements() + 1);
 }

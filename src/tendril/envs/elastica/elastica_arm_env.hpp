@@ -39,6 +39,13 @@ class ElasticaArmEnv : public Env {
   // draws the case's target.
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  // Snapshots hold the rod with its muscles, the target, the random stream and the last finite
+  // observation; stepping on from a loaded snapshot repeats the original steps exactly.
+  bool supports_snapshots() const override { return true; }
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
+  // The rod (centreline and radii), the target sphere and the obstacles.
+  bool describe_scene(Scene& scene) const override;
 
   // What a viewer needs; lab frame, m.
   Eigen::Matrix3Xd node_positions() const;  // all n + 1 nodes, base first
@@ -74,6 +81,10 @@ class ElasticaArmEnv : public Env {
   virtual void write_observation(ObservationWriter& out) const = 0;
   // The reward of a finite step; sets "is_success" and the case's own info keys in `info`.
   virtual double task_reward(double distance, Info& info) const = 0;
+  // A case's own evolving state (target motion, target orientation) in and out of snapshots;
+  // `load_task_state` reads everything before it changes anything.
+  virtual void save_task_state(SnapshotWriter& /*out*/) const {}
+  virtual void load_task_state(SnapshotReader& /*in*/) {}
 
   // The seed's [x_a, v_a, x_t] that cases 1, 3 and 4 start with: 11 arm nodes, tip speed and
   // direction, target position (kRodBlock + kVelocityBlock + kPositionBlock = 40 values).

@@ -74,4 +74,19 @@ double OrientedReach::task_reward(double distance, Info& info) const {
   return oriented_reach_reward(distance, p);
 }
 
+void OrientedReach::save_task_state(SnapshotWriter& out) const {
+  out.section("TargetOrientation");
+  out.put_matrix(target_orientation_.coeffs());
+  out.put(target_angle_);
+}
+
+void OrientedReach::load_task_state(SnapshotReader& in) {
+  in.section("TargetOrientation");
+  Eigen::Vector4d coefficients;
+  in.get_matrix(coefficients);
+  const double angle = in.get_double();
+  target_orientation_.coeffs() = coefficients;
+  target_angle_ = angle;
+}
+
 }  // namespace tendril::envs::elastica

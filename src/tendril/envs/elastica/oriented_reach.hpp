@@ -58,6 +58,8 @@ class OrientedReach : public ElasticaArmEnv {
   void reset_target(Rng& rng) override;
   void write_observation(ObservationWriter& out) const override;
   double task_reward(double distance, Info& info) const override;
+  void save_task_state(SnapshotWriter& out) const override;
+  void load_task_state(SnapshotReader& in) override;
 
  private:
   Eigen::Quaterniond target_orientation_ = Eigen::Quaterniond::Identity();

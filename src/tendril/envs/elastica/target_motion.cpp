@@ -53,10 +53,17 @@ void TargetMotion::advance(Rng& rng) {
 }
 
 void TargetMotion::set_state(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity) {
-  require(position.allFinite() && velocity.allFinite(), "target state must be finite",
+  set_state(position, velocity, updates_);
+}
+
+void TargetMotion::set_state(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                             long updates) {
+  require(position.allFinite() && velocity.allFinite() && updates >= 0,
+          "target state must be finite with a non-negative update count",
           "elastica::TargetMotion::set_state");
   position_ = position;
   velocity_ = velocity;
+  updates_ = updates;
 }
 
 }  // namespace tendril::envs::elastica

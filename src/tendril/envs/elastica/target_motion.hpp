@@ -38,6 +38,8 @@ class TargetMotion {
   // Places the target anywhere with any velocity (tests, scripted starts); a zero velocity
   // holds it still until the next direction change. Raises Error on non-finite values.
   void set_state(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+  // The same with the count of updates (which times the direction changes): a restored state.
+  void set_state(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, long updates);
 
   const Eigen::Vector3d& position() const { return position_; }
   const Eigen::Vector3d& velocity() const { return velocity_; }

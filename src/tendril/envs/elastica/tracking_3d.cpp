@@ -46,4 +46,20 @@ double Tracking3D::task_reward(double distance, Info& info) const {
   return reach_reward(distance);
 }
 
+void Tracking3D::save_task_state(SnapshotWriter& out) const {
+  out.section("TargetMotion");
+  out.put_matrix(motion_.position());
+  out.put_matrix(motion_.velocity());
+  out.put(static_cast<int64_t>(motion_.updates()));
+}
+
+void Tracking3D::load_task_state(SnapshotReader& in) {
+  in.section("TargetMotion");
+  Eigen::Vector3d position, velocity;
+  in.get_matrix(position);
+  in.get_matrix(velocity);
+  const int64_t updates = in.get_int64();
+  motion_.set_state(position, velocity, updates);
+}
+
 }  // namespace tendril::envs::elastica

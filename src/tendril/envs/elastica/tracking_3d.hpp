@@ -48,6 +48,8 @@ class Tracking3D : public ElasticaArmEnv {
   void advance_target(Rng& rng) override;
   void write_observation(ObservationWriter& out) const override;
   double task_reward(double distance, Info& info) const override;
+  void save_task_state(SnapshotWriter& out) const override;
+  void load_task_state(SnapshotReader& in) override;
 
  private:
   TargetMotion motion_;

@@ -46,4 +46,19 @@ Observation Identity::observe() const {
   return one_hot;
 }
 
+void Identity::save_state(SnapshotWriter& out) const {
+  out.section("Identity");
+  out.put(rng_);
+  out.put(static_cast<int64_t>(state_));
+}
+
+void Identity::load_state(SnapshotReader& in) {
+  in.section("Identity");
+  Rng rng = rng_;
+  in.get(rng);
+  const int64_t state = in.get_int64();
+  rng_ = rng;
+  state_ = state;
+}
+
 }  // namespace tendril::envs

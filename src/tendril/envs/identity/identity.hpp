@@ -33,6 +33,10 @@ class Identity : public Env {
   const Space& action_space() const override { return action_space_; }
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  // The state, the random stream and the episode flags: exact snapshots.
+  bool supports_snapshots() const override { return true; }
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   int64_t state() const { return state_; }
 

@@ -34,4 +34,19 @@ Step IdentityBox::step(const Action& action) {
   return result;
 }
 
+void IdentityBox::save_state(SnapshotWriter& out) const {
+  out.section("IdentityBox");
+  out.put(rng_);
+  out.put(static_cast<double>(state_));
+}
+
+void IdentityBox::load_state(SnapshotReader& in) {
+  in.section("IdentityBox");
+  Rng rng = rng_;
+  in.get(rng);
+  const auto state = static_cast<float>(in.get_double());
+  rng_ = rng;
+  state_ = state;
+}
+
 }  // namespace tendril::envs

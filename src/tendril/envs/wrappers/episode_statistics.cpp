@@ -23,4 +23,20 @@ Step EpisodeStatistics::step(const Action& action) {
   return result;
 }
 
+void EpisodeStatistics::save_state(SnapshotWriter& out) const {
+  out.section("EpisodeStatistics");
+  out.put(episode_return_);
+  out.put(episode_length_);
+  inner_->save_state(out);
+}
+
+void EpisodeStatistics::load_state(SnapshotReader& in) {
+  in.section("EpisodeStatistics");
+  const double episode_return = in.get_double();
+  const int64_t episode_length = in.get_int64();
+  inner_->load_state(in);
+  episode_return_ = episode_return;
+  episode_length_ = episode_length;
+}
+
 }  // namespace tendril::envs

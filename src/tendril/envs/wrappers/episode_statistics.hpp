@@ -23,6 +23,8 @@ class EpisodeStatistics : public Wrapper {
 
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   // The running totals of the episode in progress.
   double episode_return() const { return episode_return_; }

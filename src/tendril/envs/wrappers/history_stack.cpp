@@ -39,4 +39,18 @@ Step HistoryStack::step(const Action& action) {
   return result;
 }
 
+void HistoryStack::save_state(SnapshotWriter& out) const {
+  out.section("HistoryStack");
+  out.put_matrix(history_);
+  inner_->save_state(out);
+}
+
+void HistoryStack::load_state(SnapshotReader& in) {
+  in.section("HistoryStack");
+  Observation history = history_;
+  in.get_matrix(history);
+  inner_->load_state(in);
+  history_ = std::move(history);
+}
+
 }  // namespace tendril::envs

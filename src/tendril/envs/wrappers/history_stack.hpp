@@ -18,6 +18,8 @@ class HistoryStack : public Wrapper {
   const Space& observation_space() const override { return observation_space_; }
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   int length() const { return length_; }
 

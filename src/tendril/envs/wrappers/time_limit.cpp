@@ -25,4 +25,20 @@ Step TimeLimit::step(const Action& action) {
   return result;
 }
 
+void TimeLimit::save_state(SnapshotWriter& out) const {
+  out.section("TimeLimit");
+  out.put(elapsed_steps_);
+  out.put(has_reset_);
+  inner_->save_state(out);
+}
+
+void TimeLimit::load_state(SnapshotReader& in) {
+  in.section("TimeLimit");
+  const int64_t elapsed = in.get_int64();
+  const bool has_reset = in.get_bool();
+  inner_->load_state(in);
+  elapsed_steps_ = elapsed;
+  has_reset_ = has_reset;
+}
+
 }  // namespace tendril::envs

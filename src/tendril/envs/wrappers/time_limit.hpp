@@ -20,6 +20,8 @@ class TimeLimit : public Wrapper {
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   // Raises Error if called before the first reset.
   Step step(const Action& action) override;
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   int64_t max_episode_steps() const { return max_episode_steps_; }
   int64_t elapsed_steps() const { return elapsed_steps_; }

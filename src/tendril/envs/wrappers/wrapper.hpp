@@ -22,6 +22,12 @@ class Wrapper : public Env {
     return inner_->reset(seed);
   }
   Step step(const Action& action) override { return inner_->step(action); }
+  // A wrapper with state of its own writes its section and then the inner environment's.
+  bool supports_snapshots() const override { return inner_->supports_snapshots(); }
+  void save_state(SnapshotWriter& out) const override { inner_->save_state(out); }
+  void load_state(SnapshotReader& in) override { inner_->load_state(in); }
+  bool describe_scene(Scene& scene) const override { return inner_->describe_scene(scene); }
+  void close() override { inner_->close(); }
 
   Env& inner() { return *inner_; }
   const Env& inner() const { return *inner_; }

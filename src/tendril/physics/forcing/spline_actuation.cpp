@@ -92,4 +92,20 @@ void SplineActuation::add_loads(const RodModel&, RodState& state) {
   state.external_torques += couples_;
 }
 
+void SplineActuation::save_state(SnapshotWriter& out) const {
+  out.section("SplineActuation");
+  out.put_matrix(targets_);
+  out.put_matrix(current_);
+}
+
+void SplineActuation::load_state(SnapshotReader& in) {
+  in.section("SplineActuation");
+  Eigen::VectorXd targets = targets_, current = current_;
+  in.get_matrix(targets);
+  in.get_matrix(current);
+  targets_ = std::move(targets);
+  current_ = std::move(current);
+  update_couples();
+}
+
 }  // namespace tendril::physics

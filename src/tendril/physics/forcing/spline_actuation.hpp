@@ -21,7 +21,7 @@ struct SplineActuationSpec {
   // equidistant, s_j = j / (control_points + 1).
   std::vector<double> positions;
   std::array<bool, 3> directions{true, true, false};  // normal, binormal, twist
-  double max_torque = 75.0;                            // α_m, N·m
+  double max_torque = 75.0;                           // α_m, N·m
   // Largest change of a control point per physics step (cases 3–4 use 0.01); ∞: none.
   double max_change_per_step = std::numeric_limits<double>::infinity();
   // How A(s) enters the elements. false (SPEC M2, the rate-limited cases of the paper's code):
@@ -41,6 +41,8 @@ class SplineActuation final : public RodPart {
   uint32_t stages() const override { return kLoads; }
   void attach(const RodModel& model, const RodState& state) override;
   void add_loads(const RodModel& model, RodState& state) override;
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
 
   // Targets in [−1, 1], active directions in order (normal, binormal, twist), each
   // `control_points` long. The current control points follow them, rate-limited per step.

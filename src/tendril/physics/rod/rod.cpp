@@ -45,6 +45,54 @@ void Rod::state_changed() {
   finite_ = state_is_finite();
 }
 
+void Rod::save_state(SnapshotWriter& out) const {
+  out.section("Rod");
+  out.put(static_cast<int64_t>(model_.n_elements));
+  out.put(static_cast<int64_t>(parts_.size()));
+  out.put_matrix(state_.positions);
+  out.put_matrix(state_.velocities);
+  out.put_matrix(state_.directors);
+  out.put_matrix(state_.angular_velocities);
+  out.put(state_.time);
+  out.put(finite_);
+  for (const auto& part : parts_) part->save_state(out);
+}
+
+void Rod::load_state(SnapshotReader& in) {
+  // All or nothing: on a failure part-way, put back what was there.
+  Snapshot backup;
+  SnapshotWriter writer(backup);
+  save_state(writer);
+  try {
+    load_state_unchecked(in);
+  } catch (...) {
+    SnapshotReader restore(backup);
+    load_state_unchecked(restore);
+    throw;
+  }
+}
+
+void Rod::load_state_unchecked(SnapshotReader& in) {
+  in.section("Rod");
+  const int64_t n_elements = in.get_int64();
+  const int64_t n_parts = in.get_int64();
+  if (n_elements != model_.n_elements || n_parts != static_cast<int64_t>(parts_.size())) {
+    throw Error("snapshot of a rod with " + std::to_string(n_elements) + " elements and " +
+                    std::to_string(n_parts) + " parts; this rod has " +
+                    std::to_string(model_.n_elements) + " and " + std::to_string(parts_.size()),
+                "Rod::load_state");
+  }
+  in.get_matrix(state_.positions);
+  in.get_matrix(state_.velocities);
+  in.get_matrix(state_.directors);
+  in.get_matrix(state_.angular_velocities);
+  state_.time = in.get_double();
+  const bool finite = in.get_bool();
+  for (const auto& part : parts_) part->load_state(in);
+  compute_strains(model_, state_);
+  finite_ = finite;
+}
+
 bool Rod::state_is_finite() const {
   // A sum is non-finite iff some term is (or the terms overflow, which is a blow-up too).
   double sum = state_.positions.sum() + state_.velocities.sum() + state_.angular_velocities.sum();
@@ -96,8 +144,8 @@ void Rod::kinematic_step(double h) {
   if (!(largest < 1e-2)) {
     // A rotation beyond 0.1 rad in one step (or a non-finite rate): the general formula.
     for (int i = 0; i < n; ++i) {
-      state_.set_director(i, exp_rotation_minus(h * state_.angular_velocities.col(i)) *
-                                 state_.director(i));
+      state_.set_director(
+          i, exp_rotation_minus(h * state_.angular_velocities.col(i)) * state_.director(i));
     }
     return;
   }
@@ -172,8 +220,8 @@ RodEnergies Rod::energies() const {
     energy.rotational_kinetic +=
         0.5 * omega.dot(model_.inertia.col(i).cwiseProduct(omega)) / s.dilatations[i];
     const Eigen::Vector3d strain = s.shear_strains.col(i) - model_.rest_shear_strains.col(i);
-    energy.shear_stretch +=
-        0.5 * model_.rest_lengths[i] * strain.dot(model_.shear_stiffness.col(i).cwiseProduct(strain));
+    energy.shear_stretch += 0.5 * model_.rest_lengths[i] *
+                            strain.dot(model_.shear_stiffness.col(i).cwiseProduct(strain));
   }
   for (int j = 0; j < model_.n_voronoi(); ++j) {
     const Eigen::Vector3d strain = s.curvatures.col(j) - model_.rest_curvatures.col(j);

@@ -19,7 +19,9 @@ struct RodEnergies {
   double rotational_kinetic = 0.0;     // ½ Σ ωᵀ (J/e) ω
   double shear_stretch = 0.0;          // ½ Σ l̂ (σ − σ̂)ᵀ S (σ − σ̂)
   double bend_twist = 0.0;             // ½ Σ D̂ (κ − κ̂)ᵀ B (κ − κ̂)
-  double total() const { return translational_kinetic + rotational_kinetic + shear_stretch + bend_twist; }
+  double total() const {
+    return translational_kinetic + rotational_kinetic + shear_stretch + bend_twist;
+  }
 };
 
 // A discrete Cosserat rod (Gazzola et al. 2018) assembled from parts and advanced by position
@@ -66,6 +68,13 @@ class Rod {
   RodState& mutable_state() { return state_; }
   void state_changed();
 
+  // The whole evolving state — configuration, rates, time, the finite flag and every part's
+  // own state, in attachment order — so that advancing after load_state repeats advancing
+  // after save_state bit for bit. load_state raises Error on a snapshot of a rod of another
+  // size or with other parts, and then leaves the rod as it was.
+  void save_state(SnapshotWriter& out) const;
+  void load_state(SnapshotReader& in);
+
   double time() const { return state_.time; }
   double time_step() const { return model_.time_step; }
   int n_elements() const { return model_.n_elements; }
@@ -89,6 +98,7 @@ class Rod {
   void kinematic_step(double h);  // x += h v;  Q ← exp(−h [ω]×) Q
   void dynamic_stage();
   void dynamic_step(double dt);
+  void load_state_unchecked(SnapshotReader& in);
 
   RodModel model_;
   RodState state_;

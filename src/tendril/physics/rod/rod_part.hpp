@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "tendril/core/snapshot.hpp"
 #include "tendril/physics/rod/rod_model.hpp"
 #include "tendril/physics/rod/rod_state.hpp"
 
@@ -38,6 +39,13 @@ class RodPart {
   virtual void add_contact_loads(const RodModel& /*model*/, RodState& /*state*/) {}
   virtual void constrain_rates(const RodModel& /*model*/, RodState& /*state*/) {}
   virtual void damp_rates(const RodModel& /*model*/, RodState& /*state*/) {}
+
+  // A part whose state evolves in time (rate-limited control points, coil temperatures,
+  // chamber pressures, sensor delay lines) writes all of it here and reads it back exactly, so
+  // that Rod::save_state/load_state capture the whole simulation. Stateless parts keep the
+  // defaults. load_state reads everything before it changes anything.
+  virtual void save_state(SnapshotWriter& /*out*/) const {}
+  virtual void load_state(SnapshotReader& /*in*/) {}
 };
 
 }  // namespace tendril::physics
