@@ -6,6 +6,9 @@
 
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#ifdef TENDRIL_WITH_RL
+#include "tendril/nn/threads.hpp"
+#endif
 
 namespace {
 
@@ -18,9 +21,10 @@ commands:
   train <experiment.yaml> [--set key=value ...] [--out DIR] [--stop-at STEPS] [--quiet]
   train --resume <run-dir>
       Train a controller; write the run directory (config, progress.csv, TensorBoard events,
-      eval.csv, checkpoints/, model.pt). --stop-at pauses at the first checkpoint past STEPS.
+      eval.csv, checkpoints/, model.policy). --stop-at pauses at the first checkpoint past STEPS.
   eval <run-dir> [--episodes N] [--deterministic] [--seed S] [--best]
-      Evaluate a run's model (model.pt, else its newest checkpoint; --best: best_model.pt).
+      Evaluate a run's policy (model.policy, else its newest checkpoint; --best:
+      best_model.policy).
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.
@@ -40,6 +44,10 @@ int main(int argc, char** argv) {
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   try {
+#ifdef TENDRIL_WITH_RL
+    // One BLAS thread unless an algorithm scopes more: the other core steps environments.
+    tendril::nn::configure_numerics(1);
+#endif
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
 #ifdef TENDRIL_WITH_ENVS
     if (args[0] == "list-envs") return tendril::apps::list_envs_command(rest);

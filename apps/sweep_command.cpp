@@ -38,7 +38,7 @@ int sweep_command(const std::vector<std::string>& args) {
       continue;
     }
     // Finished runs are kept; interrupted ones continue from their newest checkpoint.
-    if (fs::exists(directory / "model.pt")) {
+    if (fs::exists(directory / "model.policy")) {
       std::printf("[%d/%zu] %s: finished earlier, kept\n", i + 1, runs.size(), directory.c_str());
       continue;
     }

@@ -27,11 +27,12 @@ void report(const rl::TrainResult& result) {
   if (result.finished) {
     std::printf("final evaluation: mean return %.2f +/- %.2f\n", result.final_eval_mean,
                 result.final_eval_std);
-    std::printf("model:          %s/model.pt\n", run.c_str());
+    std::printf("model:          %s/model.policy\n", run.c_str());
   }
   if (result.best_eval_mean) {
-    std::printf("best model:     %s/best_model.pt (mean return %.2f at %lld steps)\n", run.c_str(),
-                *result.best_eval_mean, static_cast<long long>(result.best_eval_timesteps));
+    std::printf("best model:     %s/best_model.policy (mean return %.2f at %lld steps)\n",
+                run.c_str(), *result.best_eval_mean,
+                static_cast<long long>(result.best_eval_timesteps));
   }
   if (!result.finished) {
     std::printf("continue with:  tendril train --resume %s\n", run.c_str());

@@ -73,7 +73,7 @@ LoopFigures train_loop(const Case& c) {
   if (c.algorithm == "sac") {
     agent = std::make_unique<Sac>(*env, SacConfig::from_config(algo), 0);
   } else {
-    agent = std::make_unique<Td3>(*env, Td3Config::from_config(algo, false), 0);
+    agent = std::make_unique<Td3>(*env, Td3Config::from_config(algo, rl::Td3Variant::kTd3), 0);
   }
   agent->learn(kWarmup);
   LoopFigures figures;
@@ -141,7 +141,7 @@ double bare_passes(const Case& c, int64_t steps) {
 
 // The same passes through LibTorch modules and autograd (SB3's computation without Python).
 double libtorch_passes(const Case& c, int64_t steps) {
-  nn::use_one_torch_thread();
+  torch::set_num_threads(1);
   const bool sac = c.algorithm == "sac";
   const auto mlp = [&](int64_t in, int64_t out) {
     return torch::nn::Sequential(torch::nn::Linear(in, c.hidden), torch::nn::ReLU(),
@@ -180,7 +180,7 @@ double libtorch_passes(const Case& c, int64_t steps) {
 }
 
 int run(int repeats) {
-  nn::use_one_torch_thread();
+  torch::set_num_threads(1);
   const std::vector<Case> cases{{"sac", 256, 256, 400, 1}, {"sac", 256, 256, 600, 2},
                                 {"td3", 256, 256, 600, 1}, {"td3", 256, 256, 900, 2},
                                 {"sac", 64, 100, 6000, 1}, {"sac", 64, 100, 6000, 2},

@@ -3,8 +3,8 @@
 // environment steps per second of the whole training loop (collection + updates), with 1 and
 // 8 environments, and where the time goes. Also the bare cost of one minibatch step of the
 // same network and loss in a tight loop (forward, PPO loss, backward, gradient-norm clip, Adam),
-// the bound the update's per-minibatch cost approaches: by hand over the flat buffer as Ppo
-// trains (nn::DenseActorCritic, ppo_loss), and through LibTorch autograd for comparison.
+// the bound the update's per-minibatch cost approaches, computed as Ppo trains (nn::ActorCritic,
+// ppo_loss, nn::Adam over the flat parameter vector).
 //
 //   build/bench/ppo_pendulum_bench [repeats]      (default 3; medians are reported)
 //
@@ -19,11 +19,12 @@
 
 #include "tendril/core/rng.hpp"
 #include "tendril/nn/actor_critic.hpp"
-#include "tendril/nn/dense_actor_critic.hpp"
-#include "tendril/nn/flat_adam.hpp"
+#include "tendril/nn/adam.hpp"
+#include "tendril/nn/gradient.hpp"
 #include "tendril/nn/threads.hpp"
 #include "tendril/rl/ppo/ppo.hpp"
 #include "tendril/rl/ppo/ppo_loss.hpp"
+#include "tendril/rl/rollout_minibatches.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
 namespace tendril::rl {
@@ -73,96 +74,40 @@ LoopFigures train_once(int n_envs) {
   return figures;
 }
 
-// How a bare minibatch step computes its gradient and steps.
-enum class StepPath { kTorchAdam, kAutogradFlat, kHandWritten };
-
-const char* describe(StepPath path) {
-  switch (path) {
-    case StepPath::kTorchAdam:
-      return "autograd, clip_grad_norm_, torch::optim::Adam";
-    case StepPath::kAutogradFlat:
-      return "autograd, flat buffer, nn::FlatAdam";
-    case StepPath::kHandWritten:
-      return "by hand (nn::DenseActorCritic, ppo_loss), flat buffer, nn::FlatAdam (as Ppo)";
-  }
-  return "";
-}
-
 // One minibatch of 64 rows through the SB3-default Pendulum actor-critic: PPO's loss (clip 0.2,
 // value coefficient 0.5), its gradient, the gradient norm clipped to 0.5, an Adam step.
 // Returns milliseconds per minibatch.
-double bare_minibatch_ms(StepPath path) {
+double bare_minibatch_ms() {
   nn::ActorCriticSpec spec;
   spec.observation_size = 3;
   spec.action_size = 1;
+  const nn::ActorCritic network(spec);
+  Eigen::VectorXf parameters(network.parameter_count());
+  Eigen::VectorXf gradient = Eigen::VectorXf::Zero(network.parameter_count());
   Rng init_rng(0);
-  nn::ActorCritic policy(spec, init_rng);
-  torch::optim::Adam torch_adam(policy->parameters(), torch::optim::AdamOptions(3e-4).eps(1e-5));
-  std::unique_ptr<nn::FlatAdam> flat_adam;
-  if (path != StepPath::kTorchAdam)
-    flat_adam = std::make_unique<nn::FlatAdam>(
-        policy->parameters(), nn::FlatAdam::Options{.learning_rate = 3e-4, .epsilon = 1e-5});
-  torch::manual_seed(0);
-  const torch::Tensor observations = torch::randn({64, 3});
-  const torch::Tensor actions = torch::randn({64, 1});
-  const torch::Tensor old_log_probs = torch::randn({64}) - 1.0;
-  const torch::Tensor old_values = torch::randn({64});
-  const torch::Tensor advantages = torch::randn({64});
-  const torch::Tensor returns = torch::randn({64});
+  network.initialize(parameters, init_rng);
+  nn::Adam adam(network.parameter_count(), {.learning_rate = 3e-4, .epsilon = 1e-5});
+  srand(0);
+  const Eigen::MatrixXf observations = Eigen::MatrixXf::Random(3, 64);
+  const Eigen::MatrixXf actions = Eigen::MatrixXf::Random(1, 64);
+  const Eigen::RowVectorXf old_log_probs = Eigen::RowVectorXf::Random(64).array() - 1.0f;
+  const Eigen::RowVectorXf old_values = Eigen::RowVectorXf::Random(64);
+  const Eigen::RowVectorXf advantages = Eigen::RowVectorXf::Random(64);
+  const Eigen::RowVectorXf returns = Eigen::RowVectorXf::Random(64);
+  const RolloutMinibatch batch{observations, actions,    old_log_probs,
+                               old_values,   advantages, returns};
   const PpoLossSettings settings{
       .clip_range = 0.2, .clip_range_vf = std::nullopt, .ent_coef = 0.0, .vf_coef = 0.5};
-
-  const auto autograd_loss = [&] {
-    const auto evaluation = policy->evaluate(observations, actions);
-    const torch::Tensor ratio = torch::exp(evaluation.log_prob - old_log_probs);
-    const torch::Tensor surrogate =
-        torch::min(ratio * advantages, torch::clamp(ratio, 0.8, 1.2) * advantages);
-    return torch::add(-surrogate.mean(), torch::mse_loss(evaluation.value, returns), 0.5);
-  };
-
-  // The hand-written path reads the same tensors as columns, in place.
-  std::unique_ptr<nn::DenseActorCritic> network;
-  if (path == StepPath::kHandWritten)
-    network = std::make_unique<nn::DenseActorCritic>(*policy, flat_adam->parameters());
-  const auto columns = [](const torch::Tensor& rows) {
-    return Eigen::Map<const Eigen::MatrixXf>(rows.data_ptr<float>(), rows.size(1), rows.size(0));
-  };
-  const auto row = [](const torch::Tensor& values) {
-    return Eigen::Map<const Eigen::RowVectorXf>(values.data_ptr<float>(), values.numel());
-  };
-  const PpoMinibatch batch{columns(observations), columns(actions), row(old_log_probs),
-                           row(old_values),       row(advantages),  row(returns)};
-  nn::DenseActorCritic::Tape tape;
+  nn::ActorCritic::Tape tape;
   PpoSampleGradients sample_gradients;
-
   const auto step = [&] {
-    switch (path) {
-      case StepPath::kTorchAdam: {
-        torch_adam.zero_grad();
-        autograd_loss().backward();
-        torch::nn::utils::clip_grad_norm_(policy->parameters(), 0.5);
-        torch_adam.step();
-        return;
-      }
-      case StepPath::kAutogradFlat:
-        flat_adam->zero_grad();
-        autograd_loss().backward();
-        break;
-      case StepPath::kHandWritten: {
-        nn::FlatParameters& flat = flat_adam->parameters();
-        const Eigen::Map<const Eigen::VectorXf> parameters(flat.values().data_ptr<float>(),
-                                                           flat.numel());
-        Eigen::Map<Eigen::VectorXf> gradient(flat.gradients().data_ptr<float>(), flat.numel());
-        network->evaluate(parameters, batch.observations, batch.actions, tape);
-        ppo_loss(batch, tape.log_prob, tape.entropy, tape.value, settings, sample_gradients);
-        gradient.setZero();
-        network->backward(parameters, tape, sample_gradients.log_prob, sample_gradients.entropy,
-                          sample_gradients.value, gradient);
-        break;
-      }
-    }
-    flat_adam->parameters().clip_grad_norm(0.5);
-    flat_adam->step();
+    network.evaluate(parameters, batch.observations, batch.actions, tape);
+    ppo_loss(batch, tape.log_prob, tape.entropy, tape.value, settings, sample_gradients);
+    gradient.setZero();
+    network.backward(parameters, tape, sample_gradients.log_prob, sample_gradients.entropy,
+                     sample_gradients.value, gradient);
+    nn::clip_grad_norm(gradient, 0.5);
+    adam.step(parameters, gradient);
   };
   for (int i = 0; i < 100; ++i) step();
   const auto start = Clock::now();
@@ -186,7 +131,7 @@ void print_loop(int n_envs, const std::vector<LoopFigures>& runs) {
 }
 
 int run(int repeats) {
-  nn::use_one_torch_thread();
+  nn::configure_numerics(1);
   std::printf("PPO, Pendulum-v1, SB3 defaults, %lld env steps per run, median of %d runs\n\n",
               static_cast<long long>(kStepsPerRun), repeats);
   std::printf(
@@ -200,13 +145,10 @@ int run(int repeats) {
     print_loop(n_envs, runs);
   }
   std::printf("\nBare minibatch step (64 rows: evaluate, PPO loss, gradient, clip, Adam):\n");
-  for (StepPath path : {StepPath::kTorchAdam, StepPath::kAutogradFlat, StepPath::kHandWritten}) {
-    std::vector<double> bare;
-    for (int r = 0; r < repeats; ++r) bare.push_back(bare_minibatch_ms(path));
-    const auto [lowest, highest] = std::minmax_element(bare.begin(), bare.end());
-    std::printf("  %s: %.3f ms (range %.3f–%.3f)\n", describe(path), median(bare), *lowest,
-                *highest);
-  }
+  std::vector<double> bare;
+  for (int r = 0; r < repeats; ++r) bare.push_back(bare_minibatch_ms());
+  const auto [lowest, highest] = std::minmax_element(bare.begin(), bare.end());
+  std::printf("  %.3f ms (range %.3f–%.3f)\n", median(bare), *lowest, *highest);
   return 0;
 }
 

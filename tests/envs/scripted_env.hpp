@@ -49,6 +49,20 @@ class ScriptedEnv : public Env {
 
   const Action& last_action() const { return last_action_; }
 
+  bool supports_snapshots() const override { return true; }
+  void save_state(SnapshotWriter& out) const override {
+    out.section("ScriptedEnv");
+    out.put(static_cast<int64_t>(steps_));
+    out.put(static_cast<int64_t>(resets_));
+    out.put(static_cast<double>(last_seed_));
+  }
+  void load_state(SnapshotReader& in) override {
+    in.section("ScriptedEnv");
+    steps_ = static_cast<int>(in.get_int64());
+    resets_ = static_cast<int>(in.get_int64());
+    last_seed_ = static_cast<float>(in.get_double());
+  }
+
  private:
   Observation observe() const {
     return Eigen::Vector3f(static_cast<float>(steps_), static_cast<float>(resets_), last_seed_);

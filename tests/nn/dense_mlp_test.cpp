@@ -101,6 +101,65 @@ TEST(DenseMlp, TrunkPassesMatchAutograd) {
   check_against_autograd(Activation::kRelu, false, /*trunk=*/true);
 }
 
+// J v against autograd: with g(u) = Jᵀu (a backward pass kept differentiable), J v = ∂(g·v)/∂u.
+TEST(DenseMlp, JacobianVectorProductMatchesAutograd) {
+  for (const bool trunk : {false, true}) {
+    const DenseMlp mlp = trunk ? DenseMlp::trunk({4, 8, 6}, Activation::kTanh)
+                               : DenseMlp({4, 8, 6, 3}, Activation::kRelu, /*tanh_output=*/true);
+    Rng rng(12);
+    Eigen::VectorXf parameters(mlp.parameter_count()), tangent(mlp.parameter_count());
+    mlp.initialize(parameters, rng);
+    for (Eigen::Index i = 0; i < tangent.size(); ++i) tangent[i] = static_cast<float>(rng.normal());
+    const Eigen::MatrixXf inputs = Eigen::MatrixXf::Random(4, 7);
+    const Eigen::MatrixXf input_tangent = Eigen::MatrixXf::Random(4, 7);
+
+    DenseMlp::Tape tape;
+    mlp.forward(parameters, inputs, tape);
+    std::vector<Eigen::MatrixXf> scratch;
+    Eigen::MatrixXf output_tangent;
+    mlp.jvp(parameters, tape, tangent, &input_tangent, output_tangent, scratch);
+
+    torch::Tensor theta = torch::from_blob(parameters.data(), {parameters.size()}).clone();
+    theta.requires_grad_(true);
+    torch::Tensor x = to_tensor(inputs).t().contiguous().requires_grad_(true);
+    int64_t offset = 0;
+    torch::Tensor y = x;
+    for (std::size_t layer = 0; layer + 1 < mlp.sizes().size(); ++layer) {
+      const int64_t in = mlp.sizes()[layer], out = mlp.sizes()[layer + 1];
+      y = torch::nn::functional::linear(y, theta.narrow(0, offset, out * in).reshape({out, in}),
+                                        theta.narrow(0, offset + out * in, out));
+      offset += out * (in + 1);
+      const bool last = layer + 2 == mlp.sizes().size();
+      if (!last || trunk) {
+        y = trunk ? torch::tanh(y) : torch::relu(y);
+      } else {
+        y = torch::tanh(y);
+      }
+    }
+    const torch::Tensor u = torch::zeros_like(y).requires_grad_(true);
+    const auto g = torch::autograd::grad({(y * u).sum()}, {theta, x}, {}, true, true);
+    const torch::Tensor v_theta = torch::from_blob(tangent.data(), {tangent.size()}).clone();
+    const torch::Tensor v_x = to_tensor(input_tangent).t().contiguous();
+    const torch::Tensor jv =
+        torch::autograd::grad({(g[0] * v_theta).sum() + (g[1] * v_x).sum()}, {u})[0];
+    EXPECT_TRUE(output_tangent.isApprox(to_matrix(jv.t()), 1e-4f)) << "trunk " << trunk;
+  }
+}
+
+TEST(DenseMlp, OrthogonalInitialisationHasTheGainsAndZeroBiases) {
+  const DenseMlp mlp({3, 10, 2}, Activation::kTanh);
+  Eigen::VectorXf parameters(mlp.parameter_count());
+  Rng rng(8);
+  mlp.initialize_orthogonal(parameters, 1.5, 0.1, rng);
+  using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  const Eigen::Map<const RowMajor> tall(parameters.data(), 10, 3);  // orthonormal columns
+  EXPECT_TRUE((tall.transpose() * tall).isApprox(2.25f * Eigen::MatrixXf::Identity(3, 3), 1e-5f));
+  EXPECT_EQ(parameters.segment(30, 10).norm(), 0.0f);
+  const Eigen::Map<const RowMajor> wide(parameters.data() + 40, 2, 10);  // orthonormal rows
+  EXPECT_TRUE((wide * wide.transpose()).isApprox(0.01f * Eigen::MatrixXf::Identity(2, 2), 1e-5f));
+  EXPECT_EQ(parameters.tail(2).norm(), 0.0f);
+}
+
 TEST(DenseMlp, BackwardAccumulatesIntoTheGradient) {
   const DenseMlp mlp({2, 4, 1}, Activation::kTanh);
   Rng rng(1);

@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tendril/envs/registry.hpp"
 #include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/experiment.hpp"
+#include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
@@ -44,7 +46,7 @@ Outcome train_from_config(const std::string& name) {
       update_seconds);
   const auto evaluation_env = make_evaluation_env(experiment.env, *env);
   const EvaluationResult result =
-      evaluate_policy(*algorithm, *evaluation_env, 20, true, experiment.seed + 1000);
+      evaluate_policy(algorithm->policy(), *evaluation_env, 20, true, experiment.seed + 1000);
   std::printf("%s: evaluation return %.1f ± %.1f\n", name.c_str(), result.mean_return(),
               result.std_return());
   return {result.mean_return(), algorithm->num_timesteps()};
@@ -101,12 +103,10 @@ TEST(DqnClassicControl, CartPoleReaches475Within100kSteps) {
   EXPECT_LE(result.timesteps, 100000);  // one env step per collection: no overshoot
   ASSERT_TRUE(result.best_eval_mean.has_value());
 
-  auto env = make_vec_env(experiment.env);
-  auto algorithm = make_algorithm(experiment, *env);
-  algorithm->load(run / "best_model.pt");
-  const auto evaluation_env = make_evaluation_env(experiment.env, *env);
+  const std::unique_ptr<Policy> policy = load_policy(run / "best_model.policy");
+  const auto evaluation_env = envs::make(experiment.env.id, experiment.env.params);
   const EvaluationResult best =
-      evaluate_policy(*algorithm, *evaluation_env, 20, true, experiment.seed + 1000);
+      evaluate_policy(*policy, *evaluation_env, 20, true, experiment.seed + 1000);
   std::printf(
       "dqn/cartpole.yaml: %.1f s; final model %.1f ± %.1f (10 episodes); best model (%lld steps) "
       "%.1f ± %.1f (20 other episodes)\n",

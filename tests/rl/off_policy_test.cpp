@@ -7,6 +7,7 @@
 
 #include "support/error_message.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/vector/threaded_vec_env.hpp"
 #include "tendril/envs/vector/vec_env.hpp"
 #include "tendril/rl/dqn/dqn.hpp"
 #include "tendril/rl/evaluation.hpp"
@@ -34,10 +35,12 @@ std::unique_ptr<OffPolicyAlgorithm> make(const std::string& algorithm, envs::Vec
   if (algorithm == "sac" || algorithm == "sac_sde") {
     return std::make_unique<Sac>(env, SacConfig::from_config(config), seed);
   }
-  if (algorithm == "td3")
-    return std::make_unique<Td3>(env, Td3Config::from_config(config, false), seed);
+  if (algorithm == "td3") {
+    return std::make_unique<Td3>(env, Td3Config::from_config(config, Td3Variant::kTd3), seed);
+  }
   if (algorithm == "ddpg") {
-    return std::make_unique<Td3>(env, Td3Config::from_config(config, true), seed, true);
+    return std::make_unique<Td3>(env, Td3Config::from_config(config, Td3Variant::kDdpg), seed,
+                                 Td3Variant::kDdpg);
   }
   return std::make_unique<Dqn>(env, DqnConfig::from_config(config), seed);
 }
@@ -57,7 +60,7 @@ double identity_score(const std::string& algorithm, const std::string& id, const
   auto agent = make(algorithm, *env, algo, 0);
   agent->learn(budget);
   auto evaluation_env = envs::make(id, Config::parse(params));
-  return evaluate_policy(*agent, *evaluation_env, 20, true, 1000).mean_return();
+  return evaluate_policy(agent->policy(), *evaluation_env, 20, true, 1000).mean_return();
 }
 
 constexpr const char* kSmallBox = "gamma: 0.5\nlearning_starts: 100\nnet_arch: [64, 64]\n";
@@ -155,8 +158,7 @@ TEST_P(EveryAlgorithm, SaveLoadWithBufferContinuesExactly) {
   EXPECT_EQ(probe(*restored, size), probe(*original, size));
   EXPECT_EQ(restored->num_timesteps(), original->num_timesteps());
 
-  // Both restart their environments from the saved seed stream and go on identically.
-  original->restart_environments();
+  // The checkpoint holds the environments too: both go on from the same episodes identically.
   original->learn(1800);
   restored->learn(1800);
   EXPECT_EQ(probe(*restored, size), probe(*original, size));
@@ -259,7 +261,7 @@ class UnboundedEnv : public Env {
 };
 
 TEST(OffPolicyBadInput, UnboundedActionSpaceIsRefused) {
-  envs::VecEnv env(1, [](int) { return std::make_unique<UnboundedEnv>(); });
+  envs::ThreadedVecEnv env(1, [](int) { return std::make_unique<UnboundedEnv>(); });
   for (const std::string algorithm : {"sac", "td3", "ddpg"}) {
     const std::string message = testing::error_message([&] { make(algorithm, env, "{}", 0); });
     EXPECT_NE(message.find("finite action bounds"), std::string::npos) << message;
@@ -277,7 +279,7 @@ TEST(OffPolicyBadInput, WrongSpacesAndSizesAreNamed) {
   const Observation wrong_size = Observation::Zero(5);
   EXPECT_NE(testing::error_message([&] {
               sac->predict(wrong_size, true);
-            }).find("5 components, expected 3"),
+            }).find("5 components, the policy expects 3"),
             std::string::npos);
   Observation nan = Observation::Zero(3);
   nan[1] = std::numeric_limits<float>::quiet_NaN();
@@ -288,7 +290,7 @@ TEST(OffPolicyBadInput, WrongSpacesAndSizesAreNamed) {
   auto other = make("sac", *mountain_car, "{}", 0);
   const fs::path model = temporary("other_size");
   other->save(model);
-  EXPECT_NE(testing::error_message([&] { sac->load(model); }).find("observation_size is 2"),
+  EXPECT_NE(testing::error_message([&] { sac->load(model); }).find("observations are Box(2"),
             std::string::npos);
   fs::remove(model);
 }
@@ -306,7 +308,7 @@ TEST(OffPolicyBadInput, ConfigErrorsNameTheKey) {
             }).find("ent_coef"),
             std::string::npos);
   EXPECT_NE(testing::error_message([] {
-              Td3Config::from_config(Config::parse("noise_type: pink"), false);
+              Td3Config::from_config(Config::parse("noise_type: pink"), Td3Variant::kTd3);
             }).find("noise_type"),
             std::string::npos);
   EXPECT_NE(testing::error_message([] {
@@ -319,7 +321,7 @@ TEST(OffPolicyBadInput, ConfigErrorsNameTheKey) {
             std::string::npos);
   // DDPG has no TD3-only keys.
   EXPECT_NE(testing::error_message([] {
-              Td3Config::from_config(Config::parse("policy_delay: 2"), true);
+              Td3Config::from_config(Config::parse("policy_delay: 2"), Td3Variant::kDdpg);
             }).find("policy_delay"),
             std::string::npos);
 }
@@ -329,16 +331,16 @@ TEST(OffPolicyPresets, Sb2PresetsCarryStableBaselinesV2Defaults) {
   EXPECT_EQ(sac.common.buffer_size, 50000);
   EXPECT_EQ(sac.common.batch_size, 64);
   EXPECT_EQ(sac.common.net_arch, (std::vector<int64_t>{64, 64}));
-  const Td3Config td3 = Td3Config::from_config(Config::parse("preset: sb2"), false);
+  const Td3Config td3 = Td3Config::from_config(Config::parse("preset: sb2"), Td3Variant::kTd3);
   EXPECT_EQ(td3.common.train_freq, 100);
   EXPECT_EQ(td3.common.gradient_steps, 100);
   EXPECT_EQ(td3.common.batch_size, 128);
-  const Td3Config ddpg = Td3Config::from_config(Config::parse("preset: sb2"), true);
+  const Td3Config ddpg = Td3Config::from_config(Config::parse("preset: sb2"), Td3Variant::kDdpg);
   EXPECT_EQ(ddpg.n_critics, 1);
   EXPECT_EQ(ddpg.common.tau, 0.001);
   EXPECT_EQ(*ddpg.critic_learning_rate, 1e-3);
   EXPECT_EQ(ddpg.common.learning_rate.initial, 1e-4);
-  const Td3Config sb3_ddpg = Td3Config::from_config(Config::parse("{}"), true);
+  const Td3Config sb3_ddpg = Td3Config::from_config(Config::parse("{}"), Td3Variant::kDdpg);
   EXPECT_EQ(sb3_ddpg.policy_delay, 1);
   EXPECT_EQ(sb3_ddpg.target_policy_noise, 0.0);
   EXPECT_EQ(sb3_ddpg.common.net_arch, (std::vector<int64_t>{400, 300}));

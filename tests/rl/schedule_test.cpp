@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "tendril/core/error.hpp"
-#include "tendril/rl/minibatches.hpp"
+#include "tendril/rl/rollout_minibatches.hpp"
 
 namespace tendril::rl {
 namespace {
@@ -29,20 +32,15 @@ TEST(Schedule, ReadFromConfig) {
       Error);
 }
 
-TEST(Minibatches, PermutationCutIntoBatchesWithRemainder) {
+TEST(RandomPermutation, IsAPermutationDrawnFromTheStream) {
   Rng rng(3);
-  const auto batches = shuffled_minibatches(10, 4, rng);
-  ASSERT_EQ(batches.size(), 3u);
-  EXPECT_EQ(batches[0].size(0), 4);
-  EXPECT_EQ(batches[2].size(0), 2);
-  std::vector<int64_t> seen;
-  for (const auto& batch : batches) {
-    for (int64_t i = 0; i < batch.size(0); ++i) seen.push_back(batch[i].item<int64_t>());
-  }
-  std::sort(seen.begin(), seen.end());
-  for (int64_t i = 0; i < 10; ++i) EXPECT_EQ(seen[i], i);
+  std::vector<int64_t> order = random_permutation(10, rng);
   Rng same(3);
-  EXPECT_TRUE(torch::equal(shuffled_minibatches(10, 4, same)[0], batches[0]));
+  EXPECT_EQ(random_permutation(10, same), order);
+  Rng other(4);
+  EXPECT_NE(random_permutation(10, other), order);
+  std::sort(order.begin(), order.end());
+  for (int64_t i = 0; i < 10; ++i) EXPECT_EQ(order[i], i);
 }
 
 }  // namespace

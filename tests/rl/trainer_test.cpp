@@ -12,7 +12,9 @@
 
 #include "support/error_message.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/envs/registry.hpp"
 #include "tendril/rl/evaluation.hpp"
+#include "tendril/rl/policy.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
 namespace tendril::rl {
@@ -79,10 +81,10 @@ TEST(Trainer, WritesTheRunDirectory) {
   const TrainResult result = train(experiment(), run, {.stop_at = std::nullopt, .quiet = true});
   EXPECT_TRUE(result.finished);
   EXPECT_EQ(result.timesteps, 2048);
-  for (const char* file : {"config.yaml", "progress.csv", "eval.csv", "model.pt"}) {
+  for (const char* file : {"config.yaml", "progress.csv", "eval.csv", "model.policy"}) {
     EXPECT_TRUE(fs::exists(run / file)) << file;
   }
-  EXPECT_TRUE(fs::exists(run / "checkpoints" / "step_1024.pt"));
+  EXPECT_TRUE(fs::exists(run / "checkpoints" / "step_1024.ckpt"));
   const std::string progress = read_text(run / "progress.csv");
   EXPECT_NE(progress.find("time/total_timesteps"), std::string::npos);
   EXPECT_NE(progress.find("rollout/ep_rew_mean"), std::string::npos);
@@ -104,7 +106,7 @@ TEST(Trainer, ResumedRunEqualsTheUninterruptedRun) {
   const TrainResult first = train(experiment(), paused, {.stop_at = 1000, .quiet = true});
   EXPECT_FALSE(first.finished);
   EXPECT_EQ(first.timesteps, 1024);
-  EXPECT_EQ(latest_checkpoint(paused).filename(), "step_1024.pt");
+  EXPECT_EQ(latest_checkpoint(paused).filename(), "step_1024.ckpt");
   const TrainResult second = resume(paused, {.stop_at = std::nullopt, .quiet = true});
   EXPECT_TRUE(second.finished);
   EXPECT_EQ(second.final_eval_mean, reference.final_eval_mean);
@@ -148,14 +150,13 @@ TEST(Trainer, SaveBestKeepsTheModelOfTheBestEvaluation) {
   EXPECT_EQ(*result.best_eval_mean, best.second);  // eval.csv holds the exact value
   EXPECT_EQ(result.best_eval_timesteps, best.first);
 
-  // best_model.pt, loaded anew (with its normalization statistics), repeats that evaluation.
+  // best_model.policy, loaded anew (its normalization statistics inside), repeats that
+  // evaluation on the raw environment.
   const Experiment e = experiment_saving_best();
-  auto env = make_vec_env(e.env);
-  auto algorithm = make_algorithm(e, *env);
-  algorithm->load(run / "best_model.pt");
-  EXPECT_EQ(algorithm->num_timesteps(), best.first);
-  const auto evaluation_env = make_evaluation_env(e.env, *env);
-  const EvaluationResult again = evaluate_policy(*algorithm, *evaluation_env, e.eval_episodes, true,
+  const std::unique_ptr<Policy> policy = load_policy(run / "best_model.policy");
+  ASSERT_TRUE(policy->observation_normalization().has_value());
+  const auto evaluation_env = envs::make(e.env.id, e.env.params);
+  const EvaluationResult again = evaluate_policy(*policy, *evaluation_env, e.eval_episodes, true,
                                                  e.seed + 1000003 + best.first);
   EXPECT_EQ(again.mean_return(), best.second);
 }
@@ -164,14 +165,16 @@ TEST(Trainer, ResumedRunRemembersItsBestEvaluation) {
   const fs::path whole = fresh("best_whole"), paused = fresh("best_paused");
   const TrainResult reference =
       train(experiment_saving_best(), whole, {.stop_at = std::nullopt, .quiet = true});
-  // Paused after the evaluation at 1536 steps, the best of this run (checked below): the
-  // resumed run must remember it, not take the worse evaluation at 2048 as its first.
-  train(experiment_saving_best(), paused, {.stop_at = 1500, .quiet = true});
+  // Paused right after the run's best evaluation: the resumed run must remember it, not take
+  // the next (worse) evaluation as its first best.
+  ASSERT_LT(reference.best_eval_timesteps, 2048)
+      << "the scenario needs a best evaluation before the end; change the seed of the test";
+  train(experiment_saving_best(), paused,
+        {.stop_at = reference.best_eval_timesteps, .quiet = true});
   const TrainResult resumed = resume(paused, {.stop_at = std::nullopt, .quiet = true});
   EXPECT_EQ(resumed.best_eval_mean, reference.best_eval_mean);
   EXPECT_EQ(resumed.best_eval_timesteps, reference.best_eval_timesteps);
-  EXPECT_EQ(reference.best_eval_timesteps, 1536);
-  EXPECT_EQ(read_text(paused / "best_model.pt"), read_text(whole / "best_model.pt"));
+  EXPECT_EQ(read_text(paused / "best_model.policy"), read_text(whole / "best_model.policy"));
 }
 
 constexpr const char* kOffPolicyExperiment = R"(

@@ -13,7 +13,9 @@ namespace tendril {
 
 struct Config::Shared {
   std::string source;
-  std::set<std::string> used;  // key paths that a read touched
+  std::set<std::string> used;                             // key paths that a read touched
+  YAML::Node root;                                        // the whole document
+  YAML::Node defaults = YAML::Node(YAML::NodeType::Map);  // fallbacks get_or used, by path
 };
 
 struct Config::NodeHandle {
@@ -24,15 +26,21 @@ namespace {
 
 std::string type_name(const YAML::Node& node) {
   switch (node.Type()) {
-    case YAML::NodeType::Null: return "null";
-    case YAML::NodeType::Scalar: return "'" + node.Scalar() + "'";
-    case YAML::NodeType::Sequence: return "a sequence";
-    case YAML::NodeType::Map: return "a mapping";
-    default: return "nothing";
+    case YAML::NodeType::Null:
+      return "null";
+    case YAML::NodeType::Scalar:
+      return "'" + node.Scalar() + "'";
+    case YAML::NodeType::Sequence:
+      return "a sequence";
+    case YAML::NodeType::Map:
+      return "a mapping";
+    default:
+      return "nothing";
   }
 }
 
-[[noreturn]] void wrong_type(const std::string& where, const char* expected, const YAML::Node& node) {
+[[noreturn]] void wrong_type(const std::string& where, const char* expected,
+                             const YAML::Node& node) {
   throw Error(std::string("expected ") + expected + ", got " + type_name(node), where);
 }
 
@@ -122,8 +130,8 @@ std::string join(const std::string& path, std::string_view key) {
   return path.empty() ? std::string(key) : path + "." + std::string(key);
 }
 
-void find_unused(const YAML::Node& node, const std::string& path,
-                 const std::set<std::string>& used, const std::string& source) {
+void find_unused(const YAML::Node& node, const std::string& path, const std::set<std::string>& used,
+                 const std::string& source) {
   if (!node.IsMap()) return;
   for (const auto& entry : node) {
     const std::string key_path = join(path, entry.first.as<std::string>());
@@ -136,7 +144,8 @@ YAML::Node parse_yaml(std::string_view text, const std::string& source) {
   try {
     YAML::Node root = YAML::Load(std::string(text));
     if (root.IsNull()) return YAML::Node(YAML::NodeType::Map);
-    if (!root.IsMap()) throw Error("the document must be a mapping, got " + type_name(root), source);
+    if (!root.IsMap())
+      throw Error("the document must be a mapping, got " + type_name(root), source);
     return root;
   } catch (const YAML::ParserException& e) {
     throw Error("malformed YAML at line " + std::to_string(e.mark.line + 1) + ", column " +
@@ -147,9 +156,11 @@ YAML::Node parse_yaml(std::string_view text, const std::string& source) {
 
 }  // namespace
 
-Config::Config()
-    : Config(std::make_shared<Shared>(Shared{"<empty>", {}}),
-             std::make_shared<NodeHandle>(NodeHandle{YAML::Node(YAML::NodeType::Map)}), "") {}
+Config::Config() {
+  YAML::Node root(YAML::NodeType::Map);
+  shared_ = std::make_shared<Shared>(Shared{"<empty>", {}, root});
+  node_ = std::make_shared<NodeHandle>(NodeHandle{root});
+}
 
 Config::Config(std::shared_ptr<Shared> shared, std::shared_ptr<NodeHandle> node, std::string path)
     : shared_(std::move(shared)), node_(std::move(node)), path_(std::move(path)) {}
@@ -164,7 +175,7 @@ Config Config::load_file(const std::filesystem::path& file) {
 
 Config Config::parse(std::string_view yaml_text, std::string source) {
   YAML::Node root = parse_yaml(yaml_text, source);
-  return Config(std::make_shared<Shared>(Shared{std::move(source), {}}),
+  return Config(std::make_shared<Shared>(Shared{std::move(source), {}, root}),
                 std::make_shared<NodeHandle>(NodeHandle{root}), "");
 }
 
@@ -201,12 +212,87 @@ template std::vector<double> Config::get<std::vector<double>>(std::string_view) 
 template std::vector<int64_t> Config::get<std::vector<int64_t>>(std::string_view) const;
 template std::vector<std::string> Config::get<std::vector<std::string>>(std::string_view) const;
 
+namespace {
+
+// Sets `dotted` (a key path such as "algo.policy.net_arch") in `map` to `value`, creating the
+// mappings on the way. Paths through sequences ("grid[0].key") are not recorded.
+template <typename T>
+void set_path(YAML::Node map, const std::string& dotted, const T& value) {
+  if (dotted.find('[') != std::string::npos) return;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = dotted.find('.', start);
+    const std::string part = dotted.substr(start, dot - start);
+    if (dot == std::string::npos) {
+      map[part] = value;
+      return;
+    }
+    if (!map[part] || !map[part].IsMap()) map[part] = YAML::Node(YAML::NodeType::Map);
+    map.reset(map[part]);
+    start = dot + 1;
+  }
+}
+
+// `base` with every entry of `overlay` that `base` lacks, recursively.
+void fill_missing(YAML::Node base, const YAML::Node& overlay) {
+  for (const auto& entry : overlay) {
+    const std::string key = entry.first.as<std::string>();
+    YAML::Node existing = base[key];
+    if (!existing) {
+      base[key] = YAML::Clone(entry.second);
+    } else if (existing.IsMap() && entry.second.IsMap()) {
+      fill_missing(existing, entry.second);
+    }
+  }
+}
+
+}  // namespace
+
+template <typename T>
+T Config::get_or(std::string_view key, const T& fallback) const {
+  if (has(key)) return get<T>(key);
+  set_path(shared_->defaults, key_path(key), fallback);
+  return fallback;
+}
+
+template double Config::get_or<double>(std::string_view, const double&) const;
+template int64_t Config::get_or<int64_t>(std::string_view, const int64_t&) const;
+template int Config::get_or<int>(std::string_view, const int&) const;
+template uint64_t Config::get_or<uint64_t>(std::string_view, const uint64_t&) const;
+template bool Config::get_or<bool>(std::string_view, const bool&) const;
+template std::string Config::get_or<std::string>(std::string_view, const std::string&) const;
+template std::vector<double> Config::get_or<std::vector<double>>(std::string_view,
+                                                                 const std::vector<double>&) const;
+template std::vector<int64_t> Config::get_or<std::vector<int64_t>>(
+    std::string_view, const std::vector<int64_t>&) const;
+template std::vector<std::string> Config::get_or<std::vector<std::string>>(
+    std::string_view, const std::vector<std::string>&) const;
+
+std::optional<double> Config::get_optional(std::string_view key,
+                                           const std::optional<double>& fallback,
+                                           std::string_view off_word) const {
+  if (!has(key)) {
+    if (fallback) {
+      set_path(shared_->defaults, key_path(key), *fallback);
+    } else {
+      set_path(shared_->defaults, key_path(key), std::string(off_word));
+    }
+    return fallback;
+  }
+  if (get<std::string>(key) == off_word) return std::nullopt;
+  return get<double>(key);
+}
+
+std::string Config::where(std::string_view key) const {
+  return shared_->source + ": " + key_path(key);
+}
+
 Config Config::child(std::string_view key) const {
   const std::string where = key_path(key);
   shared_->used.insert(where);
   if (!has(key)) {
-    return Config(shared_, std::make_shared<NodeHandle>(NodeHandle{YAML::Node(YAML::NodeType::Map)}),
-                  where);
+    return Config(shared_,
+                  std::make_shared<NodeHandle>(NodeHandle{YAML::Node(YAML::NodeType::Map)}), where);
   }
   YAML::Node node = node_->node[std::string(key)];
   if (!node.IsMap()) wrong_type(shared_->source + ": " + where, "a mapping", node);
@@ -219,7 +305,8 @@ std::vector<Config> Config::children(std::string_view key) const {
   if (!has(key)) return result;
   shared_->used.insert(where);
   YAML::Node node = node_->node[std::string(key)];
-  if (!node.IsSequence()) wrong_type(shared_->source + ": " + where, "a sequence of mappings", node);
+  if (!node.IsSequence())
+    wrong_type(shared_->source + ": " + where, "a sequence of mappings", node);
   for (std::size_t i = 0; i < node.size(); ++i) {
     const std::string item_path = where + "[" + std::to_string(i) + "]";
     if (!node[i].IsMap()) wrong_type(shared_->source + ": " + item_path, "a mapping", node[i]);
@@ -258,11 +345,33 @@ void Config::set(std::string_view dotted_path, std::string_view value) {
   }
 }
 
-void Config::reject_unknown() const { find_unused(node_->node, path_, shared_->used, shared_->source); }
+void Config::reject_unknown() const {
+  find_unused(node_->node, path_, shared_->used, shared_->source);
+}
 
 std::string Config::dump() const {
   YAML::Emitter out;
   out << node_->node;
+  return std::string(out.c_str()) + "\n";
+}
+
+std::string Config::dump_resolved() const {
+  YAML::Node resolved = YAML::Clone(shared_->root);
+  if (!resolved.IsMap()) resolved = YAML::Node(YAML::NodeType::Map);
+  fill_missing(resolved, shared_->defaults);
+  // This view's part of it.
+  YAML::Node view = resolved;
+  if (!path_.empty() && path_.find('[') == std::string::npos) {
+    std::size_t start = 0;
+    while (view && start <= path_.size()) {
+      const std::size_t dot = path_.find('.', start);
+      view.reset(view[path_.substr(start, dot - start)]);
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+  }
+  YAML::Emitter out;
+  out << (view ? view : YAML::Node(YAML::NodeType::Map));
   return std::string(out.c_str()) + "\n";
 }
 

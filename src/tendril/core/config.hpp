@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,10 +31,14 @@ class Config {
   template <typename T>
   T get(std::string_view key) const;
   // Optional values: `fallback` when the key is absent (a present key of the wrong type raises).
+  // The fallback is recorded as the value used (see dump_resolved).
   template <typename T>
-  T get_or(std::string_view key, const T& fallback) const {
-    return has(key) ? get<T>(key) : fallback;
-  }
+  T get_or(std::string_view key, const T& fallback) const;
+
+  // An optional number: `fallback` when the key is absent, nothing when it holds `off_word`
+  // ("none", "auto"); recorded like get_or's fallbacks.
+  std::optional<double> get_optional(std::string_view key, const std::optional<double>& fallback,
+                                     std::string_view off_word = "none") const;
 
   // A nested mapping; an absent key gives an empty mapping at that path.
   Config child(std::string_view key) const;
@@ -49,10 +54,16 @@ class Config {
 
   // The key path of this view ("" for the root) and the file it came from.
   const std::string& path() const { return path_; }
+  // Where `key` of this view is, for messages: "file.yaml: algo.batch_size".
+  std::string where(std::string_view key) const;
   const std::string& source() const;
 
   // The whole document under this view as YAML text.
   std::string dump() const;
+  // The whole document with every default that a read used (get_or's fallbacks) filled in:
+  // what the program ran with, which reads back to the same values whatever the defaults of a
+  // later version.
+  std::string dump_resolved() const;
 
  private:
   struct Shared;
@@ -75,5 +86,18 @@ extern template std::vector<double> Config::get<std::vector<double>>(std::string
 extern template std::vector<int64_t> Config::get<std::vector<int64_t>>(std::string_view) const;
 extern template std::vector<std::string> Config::get<std::vector<std::string>>(
     std::string_view) const;
+
+extern template double Config::get_or<double>(std::string_view, const double&) const;
+extern template int64_t Config::get_or<int64_t>(std::string_view, const int64_t&) const;
+extern template int Config::get_or<int>(std::string_view, const int&) const;
+extern template uint64_t Config::get_or<uint64_t>(std::string_view, const uint64_t&) const;
+extern template bool Config::get_or<bool>(std::string_view, const bool&) const;
+extern template std::string Config::get_or<std::string>(std::string_view, const std::string&) const;
+extern template std::vector<double> Config::get_or<std::vector<double>>(
+    std::string_view, const std::vector<double>&) const;
+extern template std::vector<int64_t> Config::get_or<std::vector<int64_t>>(
+    std::string_view, const std::vector<int64_t>&) const;
+extern template std::vector<std::string> Config::get_or<std::vector<std::string>>(
+    std::string_view, const std::vector<std::string>&) const;
 
 }  // namespace tendril

@@ -8,17 +8,12 @@ namespace tendril::nn {
 
 namespace {
 
-std::string where(const Config& policy, const std::string& key) {
-  const std::string path = policy.path().empty() ? key : policy.path() + "." + key;
-  return policy.source() + ": " + path;
-}
-
 std::vector<int64_t> read_layers(const Config& policy, const char* key,
                                  const std::vector<int64_t>& fallback) {
   std::vector<int64_t> layers = policy.get_or<std::vector<int64_t>>(key, fallback);
   for (int64_t units : layers) {
     require(units > 0, "layer sizes must be positive, got " + std::to_string(units),
-            where(policy, key));
+            policy.where(key));
   }
   return layers;
 }
@@ -44,10 +39,9 @@ ActorCriticSpec ActorCriticSpec::from_config(const Config& policy,
   spec.value_layers =
       read_layers(policy, "vf_layers", policy.has("net_arch") ? both : spec.value_layers);
   spec.shared_trunk = policy.get_or<bool>("shared_trunk", spec.shared_trunk);
-  if (policy.has("activation")) {
-    spec.activation =
-        parse_activation(policy.get<std::string>("activation"), where(policy, "activation"));
-  }
+  spec.activation =
+      parse_activation(policy.get_or<std::string>("activation", activation_name(spec.activation)),
+                       policy.where("activation"));
   spec.orthogonal_init = policy.get_or<bool>("ortho_init", spec.orthogonal_init);
   spec.log_std_init = policy.get_or<double>("log_std_init", spec.log_std_init);
   return spec;

@@ -1,5 +1,6 @@
 #include "tendril/nn/dense_mlp.hpp"
 
+#include <Eigen/QR>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -59,6 +60,37 @@ void DenseMlp::initialize(Eigen::Ref<Eigen::VectorXf> parameters, Rng& rng) cons
     for (int64_t i = 0; i < count; ++i) {
       parameters[offsets_[layer] + i] = static_cast<float>(rng.uniform(-bound, bound));
     }
+  }
+}
+
+void DenseMlp::initialize_orthogonal(Eigen::Ref<Eigen::VectorXf> parameters, double hidden_gain,
+                                     double output_gain, Rng& rng) const {
+  require(parameters.size() == parameter_count_, "parameter vector has the wrong size",
+          "nn::DenseMlp::initialize_orthogonal");
+  for (std::size_t layer = 0; layer + 1 < sizes_.size(); ++layer) {
+    const int64_t rows = sizes_[layer + 1], cols = sizes_[layer];
+    const double gain = layer + 2 == sizes_.size() ? output_gain : hidden_gain;
+    // Q of the QR factorisation of a Gaussian matrix, columns signed by R's diagonal (so Q is
+    // Haar-distributed); QR needs a tall matrix, so a wide weight is a tall one transposed.
+    const bool wide = rows < cols;
+    const int64_t tall_rows = wide ? cols : rows, tall_cols = wide ? rows : cols;
+    Eigen::MatrixXd gaussian(tall_rows, tall_cols);
+    for (int64_t i = 0; i < tall_rows; ++i) {
+      for (int64_t j = 0; j < tall_cols; ++j) gaussian(i, j) = rng.normal();
+    }
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(gaussian);
+    Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(tall_rows, tall_cols);
+    const Eigen::VectorXd r_diagonal = qr.matrixQR().diagonal();
+    for (int64_t j = 0; j < tall_cols; ++j) {
+      if (r_diagonal[j] < 0) q.col(j) *= -1.0;
+    }
+    RowMajorMap weight(parameters.data() + offsets_[layer], rows, cols);
+    if (wide) {
+      weight = (gain * q.transpose()).cast<float>();
+    } else {
+      weight = (gain * q).cast<float>();
+    }
+    parameters.segment(offsets_[layer] + rows * cols, rows).setZero();
   }
 }
 
@@ -122,6 +154,39 @@ void DenseMlp::backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, con
     } else if (input_gradient != nullptr) {
       multiply_transposed(weight, delta, *input_gradient);
     }
+  }
+}
+
+void DenseMlp::jvp(const Eigen::Ref<const Eigen::VectorXf>& parameters, const Tape& tape,
+                   const Eigen::Ref<const Eigen::VectorXf>& parameter_tangent,
+                   const Eigen::MatrixXf* input_tangent, Eigen::MatrixXf& output_tangent,
+                   std::vector<Eigen::MatrixXf>& scratch) const {
+  require(parameter_tangent.size() == parameter_count_, "parameter tangent has the wrong size",
+          "nn::DenseMlp::jvp");
+  const std::size_t layers = sizes_.size() - 1;
+  scratch.resize(3);  // two alternating layer tangents and a product
+  const float* data = parameters.data();
+  const float* tangent = parameter_tangent.data();
+  // t_l = act'(pre_l) ⊙ (W_l t_{l−1} + δW_l x_{l−1} + δb_l), t_0 the input tangent.
+  const Eigen::MatrixXf* previous = input_tangent;
+  for (std::size_t layer = 0; layer < layers; ++layer) {
+    const int64_t in = sizes_[layer];
+    const int64_t out = sizes_[layer + 1];
+    const bool last = layer + 1 == layers;
+    const Eigen::MatrixXf& x = layer == 0 ? tape.input : tape.outputs[layer - 1];
+    Eigen::MatrixXf& t = last ? output_tangent : scratch[layer % 2];
+    multiply(ConstRowMajorMap(tangent + offsets_[layer], out, in), x, t);
+    t.colwise() += ConstVectorMap(tangent + offsets_[layer] + out * in, out);
+    if (previous != nullptr) {
+      multiply(ConstRowMajorMap(data + offsets_[layer], out, in), *previous, scratch[2]);
+      t += scratch[2];
+    }
+    if (!last || activated_output_) {
+      scale_by_derivative(hidden_, tape.outputs[layer], t);
+    } else if (tanh_output_) {
+      scale_by_derivative(Activation::kTanh, tape.outputs[layer], t);
+    }
+    previous = &t;
   }
 }
 

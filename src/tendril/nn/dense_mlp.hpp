@@ -42,10 +42,18 @@ class DenseMlp {
   int64_t output_size() const { return sizes_.back(); }
   int64_t parameter_count() const { return parameter_count_; }
   const std::vector<int64_t>& sizes() const { return sizes_; }
+  Activation hidden_activation() const { return hidden_; }
+  bool tanh_output() const { return tanh_output_; }
+  bool activates_output() const { return activated_output_; }  // a trunk
 
   // LibTorch's default initialisation of nn.Linear (what SB3's off-policy networks use):
   // weight and bias uniform in ±1/√fan_in, drawn from `rng`.
   void initialize(Eigen::Ref<Eigen::VectorXf> parameters, Rng& rng) const;
+  // SB3's on-policy initialisation (Saxe et al. 2014 via SB3's `ortho_init`): each weight a
+  // scaled orthogonal matrix — `hidden_gain` for every layer but the last, `output_gain` for
+  // the last — and zero biases. Layer by layer, one standard-normal matrix per layer from `rng`.
+  void initialize_orthogonal(Eigen::Ref<Eigen::VectorXf> parameters, double hidden_gain,
+                             double output_gain, Rng& rng) const;
 
   // inputs: input_size × batch. The result is `tape.output()`.
   void forward(const Eigen::Ref<const Eigen::VectorXf>& parameters,
@@ -59,6 +67,15 @@ class DenseMlp {
                 const Eigen::Ref<const Eigen::MatrixXf>& output_gradient,
                 Eigen::Ref<Eigen::VectorXf> parameter_gradient, Eigen::MatrixXf* input_gradient,
                 std::vector<Eigen::MatrixXf>& scratch) const;
+
+  // Forward-mode derivative: the change of the output of the pass recorded in `tape` when the
+  // parameters move along `parameter_tangent` and the inputs along `input_tangent` (null:
+  // inputs fixed), J·v, into `output_tangent` (output_size × batch). TRPO's Fisher-vector
+  // products are JᵀMJv.
+  void jvp(const Eigen::Ref<const Eigen::VectorXf>& parameters, const Tape& tape,
+           const Eigen::Ref<const Eigen::VectorXf>& parameter_tangent,
+           const Eigen::MatrixXf* input_tangent, Eigen::MatrixXf& output_tangent,
+           std::vector<Eigen::MatrixXf>& scratch) const;
 
  private:
   std::vector<int64_t> sizes_;

@@ -1,16 +1,19 @@
 #include "tendril/nn/threads.hpp"
 
-#include <torch/torch.h>
-
 #include "tendril/nn/blas.hpp"
+
+// Declared weak: present only when libblas.so.3 is OpenBLAS.
+extern "C" int openblas_get_num_threads() __attribute__((weak));
 
 namespace tendril::nn {
 
-void use_one_torch_thread() {
-  if (torch::get_num_threads() != 1) torch::set_num_threads(1);
-  // OpenBLAS (behind LibTorch's BLAS calls and nn/blas) keeps a thread pool whose idle
-  // threads spin and take the core the environments need.
-  set_blas_threads(1);
+void configure_numerics(int blas_threads) { set_blas_threads(blas_threads); }
+
+BlasThreads::BlasThreads(int threads)
+    : previous_(openblas_get_num_threads != nullptr ? openblas_get_num_threads() : 1) {
+  set_blas_threads(threads);
 }
+
+BlasThreads::~BlasThreads() { set_blas_threads(previous_ >= 1 ? previous_ : 1); }
 
 }  // namespace tendril::nn

@@ -1,71 +1,121 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <functional>
 #include <string>
-#include <utility>
-#include <vector>
 
-#include "tendril/core/env.hpp"
+#include "tendril/core/archive.hpp"
+#include "tendril/core/rng.hpp"
 #include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/rl/episode_tracker.hpp"
+#include "tendril/rl/observer.hpp"
+#include "tendril/rl/policy.hpp"
 
 namespace tendril::rl {
 
-// Named scalars of one update, with Stable-Baselines3's logger names ("train/approx_kl", …).
-using TrainStats = std::vector<std::pair<std::string, double>>;
-
-// What `learn` reports after each iteration (on-policy: rollout + update; off-policy: a block
-// of `log_interval` steps with their gradient steps).
-struct Progress {
-  int64_t timesteps = 0;             // environment steps so far, over all envs
-  int64_t iterations = 0;            // iterations so far
-  double episode_return_mean = 0.0;  // over the last 100 finished episodes (0 if none)
-  double episode_length_mean = 0.0;
-  int64_t episodes = 0;  // finished episodes so far
-  TrainStats train;
-  // Wall time of this iteration: stepping the environments, policy inference, the updates.
-  double env_seconds = 0.0, inference_seconds = 0.0, update_seconds = 0.0;
-};
-
-// What the trainer, evaluation and the command line need of any algorithm (PPO, TRPO, SAC,
-// TD3, DDPG, DQN). Each algorithm trains on a VecEnv it borrows, which must outlive it.
+// What every learning algorithm shares (SB3's BaseAlgorithm): the vector env it trains on
+// (borrowed; it must outlive the algorithm), the seed and the random streams derived from it,
+// the step counters, the record of finished episodes, the observations the next step acts on,
+// checkpoints, and the policy it trains. The families (on-policy, off-policy) add their loops;
+// each algorithm adds its update.
+//
+// Randomness: one stream per purpose, all derived from the seed (Stream), so the same seed
+// gives the same run, whatever the threads.
 class Algorithm {
  public:
-  // Returning false from the callback stops `learn` after the current iteration.
-  using Callback = std::function<bool(const Progress&)>;
-
   virtual ~Algorithm() = default;
+  Algorithm(const Algorithm&) = delete;
+  Algorithm& operator=(const Algorithm&) = delete;
 
-  // Trains until `total_timesteps` environment steps have been taken in all (calls to `learn`
-  // continue the count; schedules anneal over `total_timesteps`).
-  virtual void learn(int64_t total_timesteps, const Callback& callback) = 0;
+  // Trains until `total_timesteps` environment steps have been taken over all envs (calls to
+  // `learn` continue the count; schedules anneal over `total_timesteps`). Observers see every
+  // step and every iteration; any of them can stop training after an iteration.
+  void learn(int64_t total_timesteps, const Observers& observers = {});
+  void learn(int64_t total_timesteps, const std::function<bool(const Progress&)>& on_iteration);
 
-  // The policy's actions for a batch (one row per observation, one row per action), the mode
-  // when `deterministic`, in the environment's action space.
-  virtual envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic) = 0;
-  // The same for one observation.
-  Action predict(const Observation& observation, bool deterministic) {
-    const envs::BatchMatrix batch = observation.transpose();
-    return predict(batch, deterministic).row(0).transpose();
-  }
+  // The policy being trained: it acts on the observations this algorithm sees (normalized
+  // ones behind a VecNormalize).
+  virtual const Policy& policy() const = 0;
+  // policy().act with the algorithm's own prediction stream (SB3's predict).
+  envs::BatchMatrix predict(const envs::BatchMatrix& observations, bool deterministic);
+  Action predict(const Observation& observation, bool deterministic);
+  // Writes the policy's model file with the vector env's observation statistics (if it
+  // normalizes observations), so that the loaded policy acts on raw observations.
+  void save_policy(const std::filesystem::path& file) const;
 
-  // Everything needed to resume — weights, optimizer state, RNG states, counters, normalizer
-  // statistics — written atomically. `load` restores a checkpoint of the same algorithm and
-  // architecture; a missing, corrupt or mismatching file raises Error and changes nothing.
-  virtual void save(const std::filesystem::path& file) const = 0;
-  virtual void load(const std::filesystem::path& file) = 0;
+  // A checkpoint: everything needed to resume exactly — the policy's and critics' weights,
+  // optimizer states, random streams, counters, episode records and the vector env's state
+  // (its normalization statistics; its environments when they all support snapshots).
+  // Written atomically; `load` reads a checkpoint of the same algorithm, spaces and network
+  // and changes nothing on any error.
+  void save(const std::filesystem::path& file) const;
+  void load(const std::filesystem::path& file);
+  // Whether the next checkpoint will hold the environments (all support snapshots and they
+  // have been reset). When not, whoever checkpoints calls request_seeded_reset() right after,
+  // so that a run resumed from the checkpoint (which must reset them) and the uninterrupted
+  // run compute the same.
+  bool checkpoints_hold_environments() const;
+  // Makes the next step start from a seeded reset of every environment.
+  void request_seeded_reset() { needs_reset_ = true; }
 
-  // Makes the next step start from a seeded reset of every environment, as it does after
-  // `load`. The trainer calls it at each checkpoint so that a run resumed from that checkpoint
-  // and the uninterrupted run are the same computation.
-  virtual void restart_environments() = 0;
+  // State too large for checkpoints, kept in a file of its own (off-policy replay buffers).
+  virtual bool has_replay_buffer() const { return false; }
+  virtual void save_replay_buffer(const std::filesystem::path& file) const;
+  virtual void load_replay_buffer(const std::filesystem::path& file);
 
-  virtual int64_t num_timesteps() const = 0;
-  virtual const std::string& name() const = 0;
+  const std::string& name() const { return name_; }
+  uint64_t seed() const { return seed_; }
+  int64_t num_timesteps() const { return num_timesteps_; }
+  int64_t iterations() const { return iterations_; }
+  // Returns of the last (up to) 100 finished episodes, oldest first.
+  const std::deque<double>& recent_returns() const { return episodes_.recent_returns(); }
+
+ protected:
+  // The random streams, one per purpose.
+  enum class Stream : uint64_t { kInit = 1, kActions, kUpdates, kPredict, kEnvSeeds };
+
+  Algorithm(std::string name, envs::VecEnv& env, uint64_t seed);
+
+  // The family's training loop: until num_timesteps() reaches `total_timesteps`, collect with
+  // observe_step after every vector-env step, update, and end each iteration with
+  // finish_iteration (stop when it returns false).
+  virtual void run(int64_t total_timesteps, const Observers& observers) = 0;
+  // The family's and the algorithm's own state in and out of checkpoints. `read_state` reads
+  // and checks everything and returns the action that installs it (run only once every read
+  // of the checkpoint succeeded).
+  virtual void write_state(ArchiveWriter& writer) const = 0;
+  virtual std::function<void()> read_state(const ArchiveReader& reader) = 0;
+
+  envs::VecEnv& env() { return env_; }
+  const envs::VecEnv& env() const { return env_; }
+  Rng& stream(Stream purpose);
+  Rng init_stream() const { return Rng(seed_, static_cast<uint64_t>(Stream::kInit)); }
+  // The observations the next step acts on; resets every environment first (seeded from the
+  // env-seed stream) when needed.
+  const envs::BatchMatrix& current_observations();
+  // Steps the vector env with `actions` (env units), counts the steps, records finished
+  // episodes, tells the observers and makes the new observations current.
+  const envs::VecStep& step_environments(const envs::BatchMatrix& actions,
+                                         const Observers& observers);
+  // Counts the iteration, fills `progress`'s counters and episode fields, and tells every
+  // observer; false when one of them asks to stop.
+  bool finish_iteration(Progress& progress, const Observers& observers);
+  // 1 at the start of the current `learn`'s budget, 0 when it is spent (SB3's).
+  double progress_remaining() const;
+
+ private:
+  std::string name_;
+  envs::VecEnv& env_;
+  uint64_t seed_;
+  Rng action_rng_, update_rng_, predict_rng_, env_seed_rng_;
+  int64_t num_timesteps_ = 0;
+  int64_t total_timesteps_ = 1;  // of the current `learn`
+  int64_t iterations_ = 0;
+  EpisodeTracker episodes_;
+  envs::BatchMatrix last_observations_;
+  bool needs_reset_ = true;
 };
-
-// Raises Error naming `where` unless `observations` has `size` finite components per row.
-void check_observations(const envs::BatchMatrix& observations, int size, const std::string& where);
 
 }  // namespace tendril::rl

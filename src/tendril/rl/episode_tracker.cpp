@@ -44,18 +44,18 @@ void EpisodeTracker::report(Progress& progress) const {
   progress.episode_length_mean = mean_length();
 }
 
-void EpisodeTracker::save(CheckpointWriter& writer) const {
-  writer.write_int("episodes", episodes_);
-  writer.write_doubles("recent_returns", std::vector<double>(returns_.begin(), returns_.end()));
-  writer.write_doubles("recent_lengths", std::vector<double>(lengths_.begin(), lengths_.end()));
+void EpisodeTracker::save(ArchiveWriter& writer) const {
+  writer.put("episodes", episodes_);
+  writer.put_doubles("recent_returns", std::vector<double>(returns_.begin(), returns_.end()));
+  writer.put_doubles("recent_lengths", std::vector<double>(lengths_.begin(), lengths_.end()));
 }
 
-std::function<void()> EpisodeTracker::prepare_load(CheckpointReader& reader) {
-  const int64_t episodes = reader.read_int("episodes");
-  const std::vector<double> returns = reader.read_doubles("recent_returns");
-  const std::vector<double> lengths = reader.read_doubles("recent_lengths");
+std::function<void()> EpisodeTracker::prepare_load(const ArchiveReader& reader) {
+  const int64_t episodes = reader.get_int("episodes");
+  const std::vector<double> returns = reader.get_doubles("recent_returns");
+  const std::vector<double> lengths = reader.get_doubles("recent_lengths");
   require(returns.size() == lengths.size() && returns.size() <= kWindow,
-          "episode records are inconsistent", reader.file().string());
+          "episode records are inconsistent", reader.name());
   return [this, episodes, returns, lengths] {
     episodes_ = episodes;
     returns_.assign(returns.begin(), returns.end());

@@ -4,9 +4,9 @@
 #include <deque>
 #include <functional>
 
+#include "tendril/core/archive.hpp"
 #include "tendril/envs/vector/vec_env.hpp"
-#include "tendril/rl/algorithm.hpp"
-#include "tendril/rl/checkpoint.hpp"
+#include "tendril/rl/observer.hpp"
 
 namespace tendril::rl {
 
@@ -24,9 +24,9 @@ class EpisodeTracker {
   // Fills the episode fields of `progress`.
   void report(Progress& progress) const;
 
-  void save(CheckpointWriter& writer) const;
+  void save(ArchiveWriter& writer) const;
   // Reads the saved state; the returned action installs it (run once every read succeeded).
-  std::function<void()> prepare_load(CheckpointReader& reader);
+  std::function<void()> prepare_load(const ArchiveReader& reader);
 
  private:
   int64_t episodes_ = 0;

@@ -20,16 +20,17 @@ double EvaluationResult::std_return() const {
   return std::sqrt(sum / static_cast<double>(returns.size()));
 }
 
-EvaluationResult evaluate_policy(Algorithm& algorithm, Env& env, int episodes, bool deterministic,
+EvaluationResult evaluate_policy(const Policy& policy, Env& env, int episodes, bool deterministic,
                                  uint64_t seed) {
   require(episodes >= 1, "episodes must be at least 1", "rl::evaluate_policy");
+  Rng rng(seed, /*stream=*/1);
   EvaluationResult result;
   for (int episode = 0; episode < episodes; ++episode) {
     Observation observation = episode == 0 ? env.reset(seed) : env.reset();
     double episode_return = 0.0;
     int64_t length = 0;
     while (true) {
-      Step step = env.step(algorithm.predict(observation, deterministic));
+      Step step = env.step(policy.act(observation, deterministic, rng));
       episode_return += step.reward;
       ++length;
       if (step.terminated || step.truncated) break;

@@ -4,7 +4,8 @@
 #include <vector>
 
 #include "tendril/core/env.hpp"
-#include "tendril/rl/algorithm.hpp"
+#include "tendril/core/rng.hpp"
+#include "tendril/rl/policy.hpp"
 
 namespace tendril::rl {
 
@@ -16,8 +17,9 @@ struct EvaluationResult {
 };
 
 // SB3's evaluate_policy: runs `episodes` full episodes of `env` (which must end them, e.g. by a
-// time limit) with the algorithm's `predict`, the first reset seeded with `seed`.
-EvaluationResult evaluate_policy(Algorithm& algorithm, Env& env, int episodes, bool deterministic,
+// time limit) with `policy`, the first reset seeded with `seed`; a stochastic policy draws
+// from a stream derived from `seed` too.
+EvaluationResult evaluate_policy(const Policy& policy, Env& env, int episodes, bool deterministic,
                                  uint64_t seed);
 
 }  // namespace tendril::rl

@@ -4,11 +4,7 @@
 #include <vector>
 
 #include "tendril/core/error.hpp"
-#include "tendril/rl/dqn/dqn.hpp"
-#include "tendril/rl/ppo/ppo.hpp"
-#include "tendril/rl/sac/sac.hpp"
-#include "tendril/rl/td3/td3.hpp"
-#include "tendril/rl/trpo/trpo.hpp"
+#include "tendril/rl/algorithm_registry.hpp"
 
 namespace tendril::rl {
 
@@ -24,12 +20,7 @@ Experiment Experiment::from_config(Config config) {
   Experiment e;
   e.config = config;
   e.algorithm = config.get<std::string>("algorithm");
-  const std::vector<std::string> known{"ppo", "trpo", "sac", "td3", "ddpg", "dqn"};
-  if (std::find(known.begin(), known.end(), e.algorithm) == known.end()) {
-    throw Error(
-        "unknown algorithm '" + e.algorithm + "' (expected ppo, trpo, sac, td3, ddpg or dqn)",
-        key(config, "algorithm"));
-  }
+  const AlgorithmSpec& algorithm = algorithm_spec(e.algorithm, key(config, "algorithm"));
   const Config env = config.child("env");
   e.env.id = env.get<std::string>("id");
   e.env.params = env.child("params");
@@ -55,44 +46,25 @@ Experiment Experiment::from_config(Config config) {
   e.save_replay_buffer = config.get_or<bool>("save_replay_buffer", false);
   e.output = config.get_or<std::string>("output", "runs/" + e.algorithm);
 
-  // Build the environment and the algorithm's configuration once: their keys are checked
-  // before anything is written (the VecEnv reward discount follows the algorithm's γ).
-  if (e.algorithm == "ppo") {
-    e.env.reward_gamma = PpoConfig::from_config(e.algo).common.gamma;
-  } else if (e.algorithm == "trpo") {
-    e.env.reward_gamma = TrpoConfig::from_config(e.algo).common.gamma;
-  } else if (e.algorithm == "sac") {
-    e.env.reward_gamma = SacConfig::from_config(e.algo).common.gamma;
-  } else if (e.algorithm == "td3" || e.algorithm == "ddpg") {
-    e.env.reward_gamma = Td3Config::from_config(e.algo, e.algorithm == "ddpg").common.gamma;
-  } else {
-    e.env.reward_gamma = DqnConfig::from_config(e.algo).common.gamma;
-  }
-  // The algorithm on one copy of the environment: an action space it cannot handle (DQN on a
-  // Box, SAC on unbounded actions) is refused here. (A replay buffer's memory is reserved, not
-  // touched, so this costs little.)
-  auto probe = make_vec_env(VecEnvOptions{e.env.id, e.env.params, 1, 1, false, false, 0.99});
-  make_algorithm(e, *probe);
+  // Read the algorithm's configuration (the reward discount follows its γ), then build the
+  // algorithm once on one copy of the environment: bad keys, and an action space the algorithm
+  // cannot handle (DQN on a Box, SAC on unbounded actions), are refused before anything is
+  // written. (A replay buffer's memory is reserved, not touched, so this costs little.)
+  e.env.reward_gamma = algorithm.gamma(e.algo);
+  VecEnvOptions probe_options = e.env;
+  probe_options.n_envs = 1;
+  probe_options.num_threads = 1;
+  probe_options.normalize_observation = probe_options.normalize_reward = false;
+  auto probe = make_vec_env(probe_options);
+  algorithm.factory(*probe, e.algo, e.seed);
   // Last: the environment's own parameters are read by the environment.
   config.reject_unknown();
   return e;
 }
 
 std::unique_ptr<Algorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env) {
-  const std::string& name = experiment.algorithm;
-  const uint64_t seed = experiment.seed;
-  if (name == "ppo")
-    return std::make_unique<Ppo>(env, PpoConfig::from_config(experiment.algo), seed);
-  if (name == "trpo") {
-    return std::make_unique<Trpo>(env, TrpoConfig::from_config(experiment.algo), seed);
-  }
-  if (name == "sac")
-    return std::make_unique<Sac>(env, SacConfig::from_config(experiment.algo), seed);
-  if (name == "td3" || name == "ddpg") {
-    return std::make_unique<Td3>(env, Td3Config::from_config(experiment.algo, name == "ddpg"),
-                                 seed);
-  }
-  return std::make_unique<Dqn>(env, DqnConfig::from_config(experiment.algo), seed);
+  return algorithm_spec(experiment.algorithm, "experiment")
+      .factory(env, experiment.algo, experiment.seed);
 }
 
 }  // namespace tendril::rl

@@ -42,7 +42,7 @@ struct Experiment {
   int64_t eval_freq = 0;
   int eval_episodes = 10;
   bool eval_deterministic = true;
-  // Keep the model of the best evaluation so far as best_model.pt (SB3's EvalCallback with a
+  // Keep the model of the best evaluation so far as best_model.policy (SB3's EvalCallback with a
   // best-model path): value-based learners such as DQN can lose a solved task late in a run.
   bool eval_save_best = false;
   int64_t checkpoint_freq = 0;

@@ -17,10 +17,9 @@ void OffPolicyConfig::read(const Config& algo) {
   learning_rate = read_schedule(algo, "learning_rate", learning_rate);
   net_arch = algo.get_or<std::vector<int64_t>>("net_arch", net_arch);
   qf_net_arch = algo.get_or<std::vector<int64_t>>("qf_net_arch", qf_net_arch);
-  if (algo.has("activation")) {
-    activation = nn::parse_activation(algo.get<std::string>("activation"),
-                                      algo.source() + ": " + algo.path() + ".activation");
-  }
+  activation =
+      nn::parse_activation(algo.get_or<std::string>("activation", nn::activation_name(activation)),
+                           algo.where("activation"));
   log_interval = algo.get_or<int64_t>("log_interval", log_interval);
   learner_threads = algo.get_or<int>("learner_threads", learner_threads);
 }

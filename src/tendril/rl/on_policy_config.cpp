@@ -9,7 +9,7 @@ void OnPolicyConfig::read(const Config& algo) {
   gamma = algo.get_or<double>("gamma", gamma);
   gae_lambda = algo.get_or<double>("gae_lambda", gae_lambda);
   normalize_advantage = algo.get_or<bool>("normalize_advantage", normalize_advantage);
-  if (algo.has("policy")) policy = nn::ActorCriticSpec::from_config(algo.child("policy"), policy);
+  policy = nn::ActorCriticSpec::from_config(algo.child("policy"), policy);
 }
 
 void OnPolicyConfig::validate(const std::string& where) const {

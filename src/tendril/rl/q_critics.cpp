@@ -64,15 +64,16 @@ void QCritics::step(double learning_rate) {
   gradient_.setZero();
 }
 
-void QCritics::save(CheckpointWriter& writer, const std::string& prefix) const {
-  writer.write_floats(prefix + "_parameters", parameters_);
-  writer.write_floats(prefix + "_target", target_);
+void QCritics::save(ArchiveWriter& writer, const std::string& prefix) const {
+  writer.put_floats(prefix + "_parameters", parameters_);
+  writer.put_floats(prefix + "_target", target_);
   save_adam(writer, prefix + "_adam", optimizer_);
 }
 
-std::function<void()> QCritics::prepare_load(CheckpointReader& reader, const std::string& prefix) {
-  Eigen::VectorXf parameters = reader.read_floats(prefix + "_parameters", parameters_.size());
-  Eigen::VectorXf target = reader.read_floats(prefix + "_target", target_.size());
+std::function<void()> QCritics::prepare_load(const ArchiveReader& reader,
+                                             const std::string& prefix) {
+  Eigen::VectorXf parameters = reader.get_floats(prefix + "_parameters", parameters_.size());
+  Eigen::VectorXf target = reader.get_floats(prefix + "_target", target_.size());
   std::function<void()> install_adam =
       prepare_adam(reader, prefix + "_adam", optimizer_, parameters_.size());
   return [this, parameters, target, install_adam] {

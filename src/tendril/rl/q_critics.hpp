@@ -4,11 +4,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "tendril/core/archive.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/nn/adam.hpp"
 #include "tendril/nn/dense_mlp.hpp"
+#include "tendril/nn/gradient.hpp"
 #include "tendril/rl/adam_checkpoint.hpp"
-#include "tendril/rl/checkpoint.hpp"
 
 namespace tendril::rl {
 
@@ -39,13 +40,11 @@ class QCritics {
   // One Adam step from `gradient()`, which is then zeroed.
   void step(double learning_rate);
   // target ← (1 − τ) target + τ online.
-  void update_target(double tau) {
-    target_ = (1.0f - static_cast<float>(tau)) * target_ + static_cast<float>(tau) * parameters_;
-  }
+  void update_target(double tau) { nn::polyak_update(target_, parameters_, tau); }
 
-  void save(CheckpointWriter& writer, const std::string& prefix) const;
+  void save(ArchiveWriter& writer, const std::string& prefix) const;
   // Returns the action that installs the read state.
-  std::function<void()> prepare_load(CheckpointReader& reader, const std::string& prefix);
+  std::function<void()> prepare_load(const ArchiveReader& reader, const std::string& prefix);
 
   const Eigen::VectorXf& parameters() const { return parameters_; }
 

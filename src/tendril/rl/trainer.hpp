@@ -13,9 +13,9 @@ namespace tendril::rl {
 //   progress.csv      one row per iteration, Stable-Baselines3's column names
 //   events.out.tfevents.*   the same scalars for TensorBoard
 //   eval.csv          evaluation returns every `eval.freq` steps and at the end
-//   checkpoints/step_<N>.pt   everything needed to resume, every `checkpoint_freq` steps
-//   model.pt          the final model
-//   best_model.pt     with eval.save_best: the model of the best evaluation (highest mean
+//   checkpoints/step_<N>.ckpt   everything needed to resume, every `checkpoint_freq` steps
+//   model.policy      the final policy (rl::load_policy; acts on raw observations)
+//   best_model.policy with eval.save_best: the policy of the best evaluation (highest mean
 //                     return; the latest of equals, which has trained longest)
 // and a live progress line on standard error.
 struct TrainOptions {
@@ -31,7 +31,7 @@ struct TrainResult {
   bool finished = false;         // reached n_timesteps
   double final_eval_mean = 0.0;  // of the last evaluation (when finished)
   double final_eval_std = 0.0;
-  std::optional<double> best_eval_mean;  // with eval.save_best: of best_model.pt
+  std::optional<double> best_eval_mean;  // with eval.save_best: of best_model.policy
   int64_t best_eval_timesteps = 0;
   double seconds = 0.0;
   double steps_per_second = 0.0;
@@ -43,7 +43,8 @@ TrainResult train(const Experiment& experiment, const std::filesystem::path& run
 
 // Continues the run in `run_directory` from its newest checkpoint, with the experiment saved
 // there. The resumed run computes exactly what the uninterrupted run computes: checkpoints are
-// taken between rollouts and every environment restarts from a seeded reset after each one.
+// taken between iterations and hold the environments' state when they support snapshots (and
+// otherwise every environment restarts from a seeded reset after each checkpoint).
 TrainResult resume(const std::filesystem::path& run_directory, const TrainOptions& options = {});
 
 // The newest checkpoint in a run directory; raises Error if there is none.

@@ -2,6 +2,8 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/vector/threaded_vec_env.hpp"
+#include "tendril/envs/vector/vec_normalize.hpp"
 #include "tendril/envs/wrappers/episode_statistics.hpp"
 #include "tendril/envs/wrappers/normalize_observation.hpp"
 
@@ -12,13 +14,14 @@ std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options) {
   auto factory = [&options](int) -> std::unique_ptr<Env> {
     return std::make_unique<envs::EpisodeStatistics>(envs::make(options.id, options.params));
   };
-  auto env = std::make_unique<envs::VecEnv>(options.n_envs, factory, options.num_threads);
+  std::unique_ptr<envs::VecEnv> env =
+      std::make_unique<envs::ThreadedVecEnv>(options.n_envs, factory, options.num_threads);
   if (options.normalize_observation || options.normalize_reward) {
     envs::VecNormalize::Options normalize;
     normalize.normalize_observation = options.normalize_observation;
     normalize.normalize_reward = options.normalize_reward;
     normalize.gamma = options.reward_gamma;
-    env->attach_normalizer(normalize);
+    env = std::make_unique<envs::VecNormalize>(std::move(env), normalize);
   }
   return env;
 }

@@ -1,5 +1,3 @@
-#include "tendril/envs/vector/vec_env.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +7,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/envs/classic_control/pendulum.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/vector/threaded_vec_env.hpp"
 #include "tendril/envs/wrappers/episode_statistics.hpp"
 #include "tendril/envs/wrappers/time_limit.hpp"
 
@@ -17,20 +16,20 @@ namespace {
 
 using testing::ScriptedEnv;
 
-VecEnv make_vec(const std::string& id, int num_envs, int num_threads) {
-  return VecEnv(
+ThreadedVecEnv make_vec(const std::string& id, int num_envs, int num_threads) {
+  return ThreadedVecEnv(
       num_envs, [&](int) { return make(id); }, num_threads);
 }
 
-BatchMatrix random_actions(const VecEnv& vec, Rng& rng) {
+BatchMatrix random_actions(const ThreadedVecEnv& vec, Rng& rng) {
   BatchMatrix actions(vec.num_envs(), vec.action_space().size());
   for (int i = 0; i < vec.num_envs(); ++i)
     actions.row(i) = vec.action_space().sample(rng).transpose();
   return actions;
 }
 
-TEST(VecEnv, ObservationsAreOneRowMajorBufferAndEnvISeededWithSeedPlusI) {
-  VecEnv vec = make_vec("Pendulum-v1", 4, 1);
+TEST(ThreadedVecEnv, ObservationsAreOneRowMajorBufferAndEnvISeededWithSeedPlusI) {
+  ThreadedVecEnv vec = make_vec("Pendulum-v1", 4, 1);
   const BatchMatrix& observations = vec.reset(100);
   ASSERT_EQ(observations.rows(), 4);
   ASSERT_EQ(observations.cols(), 3);
@@ -43,14 +42,14 @@ TEST(VecEnv, ObservationsAreOneRowMajorBufferAndEnvISeededWithSeedPlusI) {
   }
 }
 
-TEST(VecEnv, AutoResetKeepsTheFinalObservation) {
+TEST(ThreadedVecEnv, AutoResetKeepsTheFinalObservation) {
   // ScriptedEnv observes [steps, resets, seed]; a 2-step limit on env 0, 3 steps on env 1.
   std::vector<std::unique_ptr<Env>> envs;
   envs.push_back(std::make_unique<EpisodeStatistics>(
       std::make_unique<TimeLimit>(std::make_unique<ScriptedEnv>(), 2)));
   envs.push_back(std::make_unique<EpisodeStatistics>(
       std::make_unique<ScriptedEnv>(ScriptedEnv::Options{0.5, 3})));
-  VecEnv vec(std::move(envs), 2);
+  ThreadedVecEnv vec(std::move(envs), 2);
   vec.reset(10);
   const BatchMatrix actions = BatchMatrix::Zero(2, 2);
 
@@ -80,7 +79,7 @@ TEST(VecEnv, AutoResetKeepsTheFinalObservation) {
 // Runs `steps` random steps and returns every observation, reward and flag in one buffer.
 std::vector<float> trace(const std::string& id, int num_envs, int num_threads, uint64_t seed,
                          int steps) {
-  VecEnv vec = make_vec(id, num_envs, num_threads);
+  ThreadedVecEnv vec = make_vec(id, num_envs, num_threads);
   Rng rng(seed, 99);
   std::vector<float> out;
   const auto append = [&](const BatchMatrix& m) {
@@ -100,7 +99,7 @@ std::vector<float> trace(const std::string& id, int num_envs, int num_threads, u
   return out;
 }
 
-TEST(VecEnv, ThreadedEqualsSynchronousBitForBit) {
+TEST(ThreadedVecEnv, ThreadedEqualsSynchronousBitForBit) {
   for (const std::string id : {"Pendulum-v1", "CartPole-v1"}) {
     const std::vector<float> synchronous = trace(id, 5, 1, 42, 600);
     const std::vector<float> threaded = trace(id, 5, 3, 42, 600);
@@ -111,13 +110,13 @@ TEST(VecEnv, ThreadedEqualsSynchronousBitForBit) {
   }
 }
 
-TEST(VecEnv, SameSeedSameRunDifferentSeedDifferentRun) {
+TEST(ThreadedVecEnv, SameSeedSameRunDifferentSeedDifferentRun) {
   EXPECT_EQ(trace("CartPole-v1", 3, 2, 7, 300), trace("CartPole-v1", 3, 2, 7, 300));
   EXPECT_NE(trace("CartPole-v1", 3, 2, 7, 300), trace("CartPole-v1", 3, 2, 8, 300));
 }
 
-TEST(VecEnv, AnEnvironmentErrorInAWorkerReachesTheCallerUnchanged) {
-  VecEnv vec = make_vec("Pendulum-v1", 4, 2);
+TEST(ThreadedVecEnv, AnEnvironmentErrorInAWorkerReachesTheCallerUnchanged) {
+  ThreadedVecEnv vec = make_vec("Pendulum-v1", 4, 2);
   vec.reset(0);
   BatchMatrix actions = BatchMatrix::Zero(4, 1);
   actions(2, 0) = std::nanf("");
@@ -133,8 +132,8 @@ TEST(VecEnv, AnEnvironmentErrorInAWorkerReachesTheCallerUnchanged) {
   EXPECT_NO_THROW(vec.step(actions));
 }
 
-TEST(VecEnv, RejectsBadShapes) {
-  VecEnv vec = make_vec("Pendulum-v1", 2, 1);
+TEST(ThreadedVecEnv, RejectsBadShapes) {
+  ThreadedVecEnv vec = make_vec("Pendulum-v1", 2, 1);
   EXPECT_THROW(vec.step(BatchMatrix::Zero(2, 1)), Error);  // before reset
   vec.reset(0);
   EXPECT_THROW(vec.step(BatchMatrix::Zero(3, 1)), Error);
@@ -142,7 +141,7 @@ TEST(VecEnv, RejectsBadShapes) {
   std::vector<std::unique_ptr<Env>> mixed;
   mixed.push_back(make("Pendulum-v1"));
   mixed.push_back(make("CartPole-v1"));
-  EXPECT_THROW(VecEnv(std::move(mixed)), Error);
+  EXPECT_THROW(ThreadedVecEnv(std::move(mixed)), Error);
   EXPECT_THROW(make_vec("Pendulum-v1", 0, 1), Error);
 }
 

@@ -14,7 +14,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/registry.hpp"
-#include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/envs/vector/threaded_vec_env.hpp"
 #include "tendril/envs/wrappers/episode_statistics.hpp"
 
 namespace tendril::envs {
@@ -29,15 +29,17 @@ const VecNormalize::Options kRewardsOnly{.normalize_observation = false, .normal
 
 // Three ScriptedEnvs observing [steps, resets, seed], whose episodes end after 2, 3 and 4 steps;
 // with `options`, under a shared VecNormalize.
-VecEnv scripted(std::optional<VecNormalize::Options> options, int num_threads = 1) {
-  VecEnv vec(
+std::unique_ptr<ThreadedVecEnv> scripted_raw(int num_threads = 1) {
+  return std::make_unique<ThreadedVecEnv>(
       3,
       [](int i) {
         return std::make_unique<ScriptedEnv>(ScriptedEnv::Options{1.0, 2 + i});
       },
       num_threads);
-  if (options) vec.attach_normalizer(*options);
-  return vec;
+}
+
+std::unique_ptr<VecNormalize> scripted(VecNormalize::Options options, int num_threads = 1) {
+  return std::make_unique<VecNormalize>(scripted_raw(num_threads), options);
 }
 
 const BatchMatrix kScriptedActions = BatchMatrix::Zero(3, 2);
@@ -62,21 +64,21 @@ Pooled pooled(const std::vector<Eigen::VectorXd>& samples) {
 }
 
 TEST(VecNormalize, SharedStatisticsEqualThoseOfTheStackedBatches) {
-  VecEnv raw = scripted(std::nullopt);
-  VecEnv normalized = scripted(kObservationsOnly);
+  auto raw = scripted_raw();
+  auto normalized = scripted(kObservationsOnly);
   std::vector<Eigen::VectorXd> samples;  // every raw observation row the statistics saw
   const auto collect = [&](const BatchMatrix& batch) {
     for (Eigen::Index i = 0; i < batch.rows(); ++i) {
       samples.push_back(batch.row(i).transpose().cast<double>());
     }
   };
-  collect(raw.reset(10));
-  const BatchMatrix first = normalized.reset(10);
+  collect(raw->reset(10));
+  const BatchMatrix first = normalized->reset(10);
   for (int t = 0; t < 6; ++t) {
-    if (t > 0) collect(raw.step(kScriptedActions).observations);
+    if (t > 0) collect(raw->step(kScriptedActions).observations);
     const BatchMatrix& observations =
-        t > 0 ? normalized.step(kScriptedActions).observations : first;
-    const RunningMeanStd& shared = normalized.normalizer()->observation_statistics();
+        t > 0 ? normalized->step(kScriptedActions).observations : first;
+    const RunningMeanStd& shared = normalized->observation_statistics();
     const Pooled expected = pooled(samples);
     EXPECT_NEAR(shared.count(), expected.count, 1e-9) << t;
     for (int j = 0; j < 3; ++j) {
@@ -89,15 +91,16 @@ TEST(VecNormalize, SharedStatisticsEqualThoseOfTheStackedBatches) {
       }
     }
   }
-  EXPECT_NEAR(normalized.normalizer()->observation_statistics().count(), 18.0 + kPrior, 1e-12);
+  EXPECT_NEAR(normalized->observation_statistics().count(), 18.0 + kPrior, 1e-12);
 }
 
 // Every observation, final observation, reward and flag of `steps` random steps, in one buffer.
 std::vector<float> normalized_trace(const std::string& id, int num_threads, int steps,
                                     RunningMeanStd& observation_statistics) {
-  VecEnv vec(
-      3, [&](int) { return std::make_unique<EpisodeStatistics>(make(id)); }, num_threads);
-  vec.attach_normalizer(VecNormalize::Options{});
+  VecNormalize vec(
+      std::make_unique<ThreadedVecEnv>(
+          3, [&](int) { return std::make_unique<EpisodeStatistics>(make(id)); }, num_threads),
+      VecNormalize::Options{});
   Rng rng(5, 17);
   std::vector<float> out;
   const auto append = [&](const BatchMatrix& m) {
@@ -113,7 +116,7 @@ std::vector<float> normalized_trace(const std::string& id, int num_threads, int 
     out.insert(out.end(), step.rewards.data(), step.rewards.data() + step.rewards.size());
     for (int i = 0; i < 3; ++i) out.push_back(static_cast<float>(step.done(i)));
   }
-  observation_statistics = vec.normalizer()->observation_statistics();
+  observation_statistics = vec.observation_statistics();
   return out;
 }
 
@@ -160,28 +163,27 @@ class RewardScript : public Env {
   Space action_space_ = Space::box(1, -1.0f, 1.0f);
 };
 
-VecEnv reward_scripts(const std::array<std::vector<double>, 3>& rewards,
-                      const std::array<int, 3>& episode_lengths) {
-  VecEnv vec(3, [&](int i) {
+std::unique_ptr<VecNormalize> reward_scripts(const std::array<std::vector<double>, 3>& rewards,
+                                             const std::array<int, 3>& episode_lengths) {
+  auto inner = std::make_unique<ThreadedVecEnv>(3, [&](int i) {
     return std::make_unique<EpisodeStatistics>(
         std::make_unique<RewardScript>(rewards[i], episode_lengths[i]));
   });
-  vec.attach_normalizer(kRewardsOnly);
-  return vec;
+  return std::make_unique<VecNormalize>(std::move(inner), kRewardsOnly);
 }
 
 TEST(VecNormalize, ScalesRewardsByTheStdOfTheSharedDiscountedReturn) {
   const std::array<std::vector<double>, 3> rewards = {
       std::vector<double>{1.0, -2.0, 0.5}, {3.0}, {-1.0, 4.0}};
   const std::array<int, 3> lengths = {2, 3, 4};
-  VecEnv vec = reward_scripts(rewards, lengths);
-  vec.reset(0);
+  auto vec = reward_scripts(rewards, lengths);
+  vec->reset(0);
   const BatchMatrix actions = BatchMatrix::Zero(3, 1);
   std::vector<Eigen::VectorXd> returns_seen;  // every R_i the return statistics saw
   std::array<double, 3> running_return{}, episode_return{};
   std::array<int, 3> steps{};
   for (int t = 0; t < 9; ++t) {
-    const VecStep& step = vec.step(actions);
+    const VecStep& step = vec->step(actions);
     std::array<double, 3> reward{};
     for (int i = 0; i < 3; ++i) {
       reward[i] = rewards[i][t % rewards[i].size()];
@@ -189,7 +191,7 @@ TEST(VecNormalize, ScalesRewardsByTheStdOfTheSharedDiscountedReturn) {
       returns_seen.push_back(Eigen::VectorXd::Constant(1, running_return[i]));
     }
     const Pooled expected = pooled(returns_seen);
-    const RunningMeanStd& shared = vec.normalizer()->return_statistics();
+    const RunningMeanStd& shared = vec->return_statistics();
     EXPECT_NEAR(shared.count(), expected.count, 1e-9) << t;
     EXPECT_NEAR(shared.mean()[0], expected.mean[0], 1e-9) << t;
     EXPECT_NEAR(shared.var()[0], expected.var[0], 1e-9) << t;
@@ -205,7 +207,7 @@ TEST(VecNormalize, ScalesRewardsByTheStdOfTheSharedDiscountedReturn) {
         running_return[i] = episode_return[i] = 0.0;
         steps[i] = 0;
       }
-      EXPECT_NEAR(vec.normalizer()->returns()[i], running_return[i], 1e-12) << t << "," << i;
+      EXPECT_NEAR(vec->returns()[i], running_return[i], 1e-12) << t << "," << i;
     }
   }
 }
@@ -214,33 +216,33 @@ TEST(VecNormalize, ClipsScaledRewardsAtTen) {
   // Equal returns in every env leave the return variance near the prior's share, ~1/3:
   // ±100 / 0.577 is far beyond the clip.
   for (const double reward : {100.0, -100.0}) {
-    VecEnv vec = reward_scripts({std::vector<double>{reward}, {reward}, {reward}}, {5, 5, 5});
-    vec.reset(0);
-    const VecStep& step = vec.step(BatchMatrix::Zero(3, 1));
+    auto vec = reward_scripts({std::vector<double>{reward}, {reward}, {reward}}, {5, 5, 5});
+    vec->reset(0);
+    const VecStep& step = vec->step(BatchMatrix::Zero(3, 1));
     for (int i = 0; i < 3; ++i) EXPECT_EQ(step.rewards[i], reward > 0 ? 10.0f : -10.0f);
   }
   // Frozen at std 1e-3: 5 and −5 clip, 5e-4 does not.
-  VecEnv vec = reward_scripts({std::vector<double>{5.0}, {-5.0}, {5e-4}}, {5, 5, 5});
+  auto vec = reward_scripts({std::vector<double>{5.0}, {-5.0}, {5e-4}}, {5, 5, 5});
   const RunningMeanStd tight = RunningMeanStd::from_array(std::vector<double>{1e4, 0.0, 1e-6}, 1);
-  vec.normalizer()->set_return_state(tight, Eigen::VectorXd::Zero(3));
-  vec.normalizer()->set_training(false);
-  vec.reset(0);
-  const VecStep& step = vec.step(BatchMatrix::Zero(3, 1));
+  vec->set_return_state(tight, Eigen::VectorXd::Zero(3));
+  vec->set_training(false);
+  vec->reset(0);
+  const VecStep& step = vec->step(BatchMatrix::Zero(3, 1));
   EXPECT_EQ(step.rewards[0], 10.0f);
   EXPECT_EQ(step.rewards[1], -10.0f);
   EXPECT_NEAR(step.rewards[2], 5e-4 / std::sqrt(1e-6 + 1e-8), 1e-6);  // ≈ 0.4975
 }
 
 TEST(VecNormalize, FinalObservationsUseTheSameStatisticsAsObservations) {
-  VecEnv raw = scripted(std::nullopt);
-  VecEnv normalized = scripted(kObservationsOnly);
-  raw.reset(3);
-  normalized.reset(3);
+  auto raw = scripted_raw();
+  auto normalized = scripted(kObservationsOnly);
+  raw->reset(3);
+  normalized->reset(3);
   int finished = 0;
   for (int t = 0; t < 6; ++t) {
-    const VecStep& expected = raw.step(kScriptedActions);
-    const VecStep& step = normalized.step(kScriptedActions);
-    const RunningMeanStd& shared = normalized.normalizer()->observation_statistics();
+    const VecStep& expected = raw->step(kScriptedActions);
+    const VecStep& step = normalized->step(kScriptedActions);
+    const RunningMeanStd& shared = normalized->observation_statistics();
     const auto normalize = [&](const BatchMatrix& rows, int i) -> Eigen::RowVectorXf {
       return shared.normalize(rows.row(i).transpose().cast<double>(), 1e-8, 10.0)
           .cast<float>()
@@ -263,21 +265,21 @@ TEST(VecNormalize, FinalObservationsUseTheSameStatisticsAsObservations) {
 }
 
 TEST(VecNormalize, FrozenStatisticsDoNotChange) {
-  VecEnv raw = scripted(std::nullopt);
-  VecEnv vec = scripted(VecNormalize::Options{});
-  raw.reset(1);
-  vec.reset(1);
+  auto raw = scripted_raw();
+  auto vec = scripted(VecNormalize::Options{});
+  raw->reset(1);
+  vec->reset(1);
   for (int t = 0; t < 3; ++t) {
-    raw.step(kScriptedActions);
-    vec.step(kScriptedActions);
+    raw->step(kScriptedActions);
+    vec->step(kScriptedActions);
   }
-  VecNormalize& normalizer = *vec.normalizer();
+  VecNormalize& normalizer = *vec;
   normalizer.set_training(false);
   const RunningMeanStd observations = normalizer.observation_statistics();
   const RunningMeanStd returns = normalizer.return_statistics();
   for (int t = 0; t < 5; ++t) {
-    const VecStep& expected = raw.step(kScriptedActions);
-    const VecStep& step = vec.step(kScriptedActions);
+    const VecStep& expected = raw->step(kScriptedActions);
+    const VecStep& step = vec->step(kScriptedActions);
     for (int i = 0; i < 3; ++i) {
       const Eigen::RowVectorXf frozen =
           observations
@@ -288,27 +290,27 @@ TEST(VecNormalize, FrozenStatisticsDoNotChange) {
       EXPECT_EQ(step.rewards[i], static_cast<float>(returns.scale(1.0, 1e-8, 10.0)));
     }
   }
-  vec.reset(2);
-  vec.step(kScriptedActions);
+  vec->reset(2);
+  vec->step(kScriptedActions);
   EXPECT_EQ(normalizer.observation_statistics(), observations);
   EXPECT_EQ(normalizer.return_statistics(), returns);
   EXPECT_EQ(normalizer.returns(), Eigen::VectorXd::Zero(3));  // not accumulated while frozen
 }
 
 TEST(VecNormalize, InstalledStateContinuesTheRunExactly) {
-  VecEnv original = scripted(VecNormalize::Options{});
-  VecEnv copy = scripted(VecNormalize::Options{});
-  copy.normalizer()->set_training(false);  // steps its envs alike, gathering nothing
-  original.reset(7);
-  copy.reset(7);
+  auto original = scripted(VecNormalize::Options{});
+  auto copy = scripted(VecNormalize::Options{});
+  copy->set_training(false);  // steps its envs alike, gathering nothing
+  original->reset(7);
+  copy->reset(7);
   for (int t = 0; t < 5; ++t) {
-    original.step(kScriptedActions);
-    copy.step(kScriptedActions);
+    original->step(kScriptedActions);
+    copy->step(kScriptedActions);
   }
 
-  const VecNormalize& source = *original.normalizer();
+  const VecNormalize& source = *original;
   ASSERT_NE(source.returns(), Eigen::VectorXd::Zero(3));
-  VecNormalize& target = *copy.normalizer();
+  VecNormalize& target = *copy;
   const int size = source.observation_statistics().size();
   target.set_observation_statistics(
       RunningMeanStd::from_array(source.observation_statistics().to_array(), size));
@@ -318,8 +320,8 @@ TEST(VecNormalize, InstalledStateContinuesTheRunExactly) {
   EXPECT_EQ(target.observation_statistics(), source.observation_statistics());
   EXPECT_EQ(target.return_statistics(), source.return_statistics());
   for (int t = 0; t < 6; ++t) {
-    const VecStep& expected = original.step(kScriptedActions);
-    const VecStep& step = copy.step(kScriptedActions);
+    const VecStep& expected = original->step(kScriptedActions);
+    const VecStep& step = copy->step(kScriptedActions);
     EXPECT_EQ(step.observations, expected.observations) << t;
     EXPECT_EQ(step.final_observations, expected.final_observations) << t;
     EXPECT_EQ(step.rewards, expected.rewards) << t;
@@ -334,18 +336,59 @@ TEST(VecNormalize, InstalledStateContinuesTheRunExactly) {
   EXPECT_EQ(target.observation_statistics(), source.observation_statistics());
 }
 
+// A snapshot of the vector env holds the statistics, the running returns and every environment:
+// a fresh one loaded from it continues exactly.
+TEST(VecNormalize, SnapshotsContinueTheRunExactly) {
+  auto original = scripted(VecNormalize::Options{});
+  original->reset(7);
+  for (int t = 0; t < 5; ++t) original->step(kScriptedActions);
+  ASSERT_TRUE(original->supports_snapshots());
+  Snapshot bytes;
+  SnapshotWriter out(bytes);
+  original->save_state(out, /*environments=*/true);
+
+  auto copy = scripted(VecNormalize::Options{});
+  copy->reset(99);
+  SnapshotReader in(bytes);
+  EXPECT_TRUE(copy->load_state(in));
+  EXPECT_TRUE(in.at_end());
+  EXPECT_EQ(copy->observation_statistics(), original->observation_statistics());
+  EXPECT_EQ(copy->returns(), original->returns());
+  for (int t = 0; t < 6; ++t) {
+    const VecStep& expected = original->step(kScriptedActions);
+    const VecStep& step = copy->step(kScriptedActions);
+    EXPECT_EQ(step.observations, expected.observations) << t;
+    EXPECT_EQ(step.rewards, expected.rewards) << t;
+  }
+
+  // Without the environments: the statistics alone, and the environments need a reset.
+  Snapshot statistics_only;
+  SnapshotWriter statistics_writer(statistics_only);
+  original->save_state(statistics_writer, /*environments=*/false);
+  auto fresh = scripted(VecNormalize::Options{});
+  SnapshotReader statistics_reader(statistics_only);
+  EXPECT_FALSE(fresh->load_state(statistics_reader));
+  EXPECT_EQ(fresh->observation_statistics(), original->observation_statistics());
+  EXPECT_THROW(fresh->step(kScriptedActions), Error);
+
+  // A vector env of another size is refused.
+  VecNormalize other(
+      std::make_unique<ThreadedVecEnv>(2, [](int) { return std::make_unique<ScriptedEnv>(); }),
+      VecNormalize::Options{});
+  SnapshotReader mismatch(bytes);
+  EXPECT_THROW(other.load_state(mismatch), Error);
+}
+
 TEST(VecNormalize, SpacesAndOptionsAreChecked) {
-  VecEnv vec = scripted(VecNormalize::Options{});
-  EXPECT_EQ(vec.observation_space().describe(), "Box(3, [-10, 10])");
-  EXPECT_THROW(vec.step(kScriptedActions), Error);  // attaching asks for a reset
-  EXPECT_EQ(scripted(kRewardsOnly).observation_space().describe(),
+  auto vec = scripted(VecNormalize::Options{});
+  EXPECT_EQ(vec->observation_space().describe(), "Box(3, [-10, 10])");
+  EXPECT_THROW(vec->step(kScriptedActions), Error);  // a reset comes first
+  EXPECT_EQ(scripted(kRewardsOnly)->observation_space().describe(),
             ScriptedEnv().observation_space().describe());
-  EXPECT_THROW(VecNormalize(2, Space::discrete(4), VecNormalize::Options{}), Error);
-  EXPECT_NO_THROW(VecNormalize(2, Space::discrete(4), kRewardsOnly));
-  EXPECT_THROW(VecNormalize(0, Space::box(1, -1.0f, 1.0f), VecNormalize::Options{}), Error);
+  EXPECT_THROW(VecNormalize(nullptr, VecNormalize::Options{}), Error);
   VecNormalize::Options bad;
   bad.gamma = 1.5;
-  EXPECT_THROW(VecNormalize(2, Space::box(1, -1.0f, 1.0f), bad), Error);
+  EXPECT_THROW(VecNormalize(scripted_raw(), bad), Error);
 }
 
 }  // namespace

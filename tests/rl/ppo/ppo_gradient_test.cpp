@@ -5,18 +5,19 @@
 
 #include <string>
 
-#include "support/tensor_views.hpp"
+#include "support/torch_networks.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/nn/actor_critic.hpp"
-#include "tendril/nn/dense_actor_critic.hpp"
-#include "tendril/nn/flat_parameters.hpp"
 #include "tendril/rl/ppo/ppo_loss.hpp"
+#include "tendril/rl/rollout_minibatches.hpp"
 
 namespace tendril::rl {
 namespace {
 
-using testing::columns;
-using testing::row;
+using testing::columns_of;
+using testing::leaf;
+using testing::TorchActorCritic;
+using testing::vector_of;
 
 constexpr int64_t kBatch = 48;
 
@@ -26,16 +27,17 @@ struct Minibatch {
 
 // Observations and actions at random; old log-probabilities and values perturbed from the
 // current ones so that some ratios and values fall outside the clip ranges and some inside.
-Minibatch random_minibatch(nn::ActorCritic& policy, uint64_t seed) {
-  const nn::ActorCriticSpec& spec = policy->spec();
+Minibatch random_minibatch(const nn::ActorCriticSpec& spec, const Eigen::VectorXf& parameters,
+                           uint64_t seed) {
   torch::manual_seed(static_cast<int64_t>(seed));
   Minibatch batch;
   batch.observations = torch::randn({kBatch, spec.observation_size});
   batch.actions = spec.discrete ? torch::randint(spec.action_size, {kBatch, 1}).to(torch::kFloat)
                                 : torch::randn({kBatch, spec.action_size});
   torch::NoGradGuard no_grad;
-  const auto current = policy->evaluate(batch.observations, batch.actions);
-  batch.old_log_probs = current.log_prob + 0.3 * torch::randn({kBatch});
+  const TorchActorCritic current(spec, leaf(parameters).detach(), batch.observations);
+  batch.old_log_probs =
+      current.log_prob(batch.actions, spec.discrete) + 0.3 * torch::randn({kBatch});
   batch.old_values = current.value + 0.4 * torch::randn({kBatch});
   batch.advantages = torch::randn({kBatch});
   batch.returns = current.value + torch::randn({kBatch});
@@ -46,10 +48,11 @@ Minibatch random_minibatch(nn::ActorCritic& policy, uint64_t seed) {
 struct AutogradLoss {
   torch::Tensor policy, value, entropy, total;
 };
-AutogradLoss autograd_loss(nn::ActorCritic& policy, const Minibatch& batch,
-                           const PpoLossSettings& settings) {
-  const auto evaluation = policy->evaluate(batch.observations, batch.actions);
-  const torch::Tensor ratio = torch::exp(evaluation.log_prob - batch.old_log_probs);
+AutogradLoss autograd_loss(const nn::ActorCriticSpec& spec, const torch::Tensor& theta,
+                           const Minibatch& batch, const PpoLossSettings& settings) {
+  const TorchActorCritic evaluation(spec, theta, batch.observations);
+  const torch::Tensor ratio =
+      torch::exp(evaluation.log_prob(batch.actions, spec.discrete) - batch.old_log_probs);
   const torch::Tensor surrogate = torch::min(
       ratio * batch.advantages,
       torch::clamp(ratio, 1.0 - settings.clip_range, 1.0 + settings.clip_range) * batch.advantages);
@@ -61,7 +64,7 @@ AutogradLoss autograd_loss(nn::ActorCritic& policy, const Minibatch& batch,
     predicted = batch.old_values + torch::clamp(evaluation.value - batch.old_values, -clip, clip);
   }
   loss.value = torch::mse_loss(predicted, batch.returns);
-  loss.entropy = -evaluation.entropy.mean();
+  loss.entropy = -evaluation.entropy(spec.discrete).mean();
   loss.total = loss.policy + settings.ent_coef * loss.entropy + settings.vf_coef * loss.value;
   return loss;
 }
@@ -72,28 +75,32 @@ void expect_relatively_near(double actual, double expected, const std::string& w
 
 void check_gradient(const nn::ActorCriticSpec& spec, const PpoLossSettings& settings,
                     uint64_t seed) {
+  const nn::ActorCritic network(spec);
+  Eigen::VectorXf parameters(network.parameter_count());
   Rng init_rng(seed);
-  nn::ActorCritic policy(spec, init_rng);
-  nn::FlatParameters flat(policy->parameters());
-  if (!spec.discrete) {
-    torch::NoGradGuard no_grad;  // σ away from 1, so that the log σ terms are not trivial
-    policy->log_std().copy_(torch::linspace(-0.6, 0.3, spec.action_size));
+  network.initialize(parameters, init_rng);
+  if (!spec.discrete) {  // σ away from 1, so that the log σ terms are not trivial
+    parameters.segment(network.log_std_offset(), spec.action_size) =
+        Eigen::VectorXf::LinSpaced(spec.action_size, -0.6f, 0.3f);
   }
-  const Minibatch batch = random_minibatch(policy, seed);
+  const Minibatch batch = random_minibatch(spec, parameters, seed);
 
-  flat.zero_grad();
-  const AutogradLoss expected = autograd_loss(policy, batch, settings);
+  const torch::Tensor theta = leaf(parameters);
+  const AutogradLoss expected = autograd_loss(spec, theta, batch, settings);
   expected.total.backward();
-  const torch::Tensor expected_gradient = flat.gradients().clone();
+  const Eigen::VectorXf reference = vector_of(theta.grad());
 
-  const nn::DenseActorCritic network(*policy, flat);
-  const Eigen::Map<const Eigen::VectorXf> parameters(flat.values().data_ptr<float>(), flat.numel());
-  Eigen::VectorXf gradient = Eigen::VectorXf::Zero(flat.numel());
-  nn::DenseActorCritic::Tape tape;
+  Eigen::VectorXf gradient = Eigen::VectorXf::Zero(network.parameter_count());
+  nn::ActorCritic::Tape tape;
   PpoSampleGradients sample_gradients;
-  const PpoMinibatch minibatch{columns(batch.observations), columns(batch.actions),
-                               row(batch.old_log_probs),    row(batch.old_values),
-                               row(batch.advantages),       row(batch.returns)};
+  const Eigen::MatrixXf observations = columns_of(batch.observations);
+  const Eigen::MatrixXf actions = columns_of(batch.actions);
+  const Eigen::RowVectorXf old_log_probs = vector_of(batch.old_log_probs).transpose();
+  const Eigen::RowVectorXf old_values = vector_of(batch.old_values).transpose();
+  const Eigen::RowVectorXf advantages = vector_of(batch.advantages).transpose();
+  const Eigen::RowVectorXf returns = vector_of(batch.returns).transpose();
+  const RolloutMinibatch minibatch{observations, actions,    old_log_probs,
+                                   old_values,   advantages, returns};
   network.evaluate(parameters, minibatch.observations, minibatch.actions, tape);
   const PpoLossTerms terms =
       ppo_loss(minibatch, tape.log_prob, tape.entropy, tape.value, settings, sample_gradients);
@@ -108,19 +115,16 @@ void check_gradient(const nn::ActorCriticSpec& spec, const PpoLossSettings& sett
   EXPECT_GT(terms.clip_fraction, 0.1);
   EXPECT_LT(terms.clip_fraction, 0.9);
 
-  // Every parameter tensor's gradient, to a relative 1e-4 of its norm.
-  const Eigen::Map<const Eigen::VectorXf> reference(expected_gradient.data_ptr<float>(),
-                                                    expected_gradient.numel());
-  int64_t offset = 0;
-  for (const auto& named : policy->named_parameters()) {
-    const int64_t n = named.value().numel();
-    const Eigen::VectorXf ours = gradient.segment(offset, n);
-    const Eigen::VectorXf theirs = reference.segment(offset, n);
-    EXPECT_GT(theirs.norm(), 0.0f) << named.key();
-    EXPECT_LE((ours - theirs).norm(), 1e-4f * theirs.norm()) << named.key();
-    offset += n;
+  // The policy block and the value block, each to a relative 1e-4 of its norm.
+  const int64_t policy_count = network.policy_parameter_count();
+  for (const auto& [name, offset, count] :
+       {std::tuple<const char*, int64_t, int64_t>{"policy", 0, policy_count},
+        {"value", policy_count, network.parameter_count() - policy_count}}) {
+    const Eigen::VectorXf ours = gradient.segment(offset, count);
+    const Eigen::VectorXf theirs = reference.segment(offset, count);
+    EXPECT_GT(theirs.norm(), 0.0f) << name;
+    EXPECT_LE((ours - theirs).norm(), 1e-4f * theirs.norm()) << name;
   }
-  EXPECT_EQ(offset, flat.numel());
 }
 
 nn::ActorCriticSpec gaussian(bool shared_trunk) {

@@ -22,7 +22,7 @@ EvaluationResult train_and_evaluate(const std::string& id, const std::string& en
   ppo.learn(budget);
   EXPECT_GE(ppo.num_timesteps(), budget);
   auto evaluation_env = envs::make(id, Config::parse(env_params));
-  return evaluate_policy(ppo, *evaluation_env, 20, /*deterministic=*/true, seed + 1000);
+  return evaluate_policy(ppo.policy(), *evaluation_env, 20, /*deterministic=*/true, seed + 1000);
 }
 
 TEST(PpoIdentity, SolvesDiscreteIdentity) {

@@ -24,19 +24,11 @@ std::unique_ptr<envs::VecEnv> pendulum(int n_envs, bool normalize = false) {
 
 const char* kSmallPpo = "n_steps: 128\nbatch_size: 64\nn_epochs: 3\n";
 
-std::vector<torch::Tensor> parameters_of(const OnPolicyAlgorithm& algorithm) {
-  std::vector<torch::Tensor> copies;
-  for (const auto& p : algorithm.policy()->parameters()) copies.push_back(p.detach().clone());
-  return copies;
+Eigen::VectorXf parameters_of(const OnPolicyAlgorithm& algorithm) {
+  return algorithm.actor_critic().parameters();
 }
 
-bool same_parameters(const std::vector<torch::Tensor>& a, const std::vector<torch::Tensor>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!torch::equal(a[i], b[i])) return false;
-  }
-  return true;
-}
+bool same_parameters(const Eigen::VectorXf& a, const Eigen::VectorXf& b) { return a == b; }
 
 envs::BatchMatrix probe_observations() {
   envs::BatchMatrix observations(8, 3);
@@ -54,7 +46,7 @@ class PpoReproducibility : public testing::ScratchDirectoryTest {
 
 TEST_F(PpoReproducibility, SameSeedGivesIdenticalReturnsAndParameters) {
   std::vector<std::vector<double>> returns;
-  std::vector<std::vector<torch::Tensor>> parameters;
+  std::vector<Eigen::VectorXf> parameters;
   for (uint64_t seed : {7u, 7u, 8u}) {
     auto env = pendulum(2);
     Ppo ppo(*env, PpoConfig::from_config(Config::parse(kSmallPpo)), seed);
@@ -79,7 +71,7 @@ TEST_F(PpoReproducibility, SameSeedGivesIdenticalReturnsAndParameters) {
 }
 
 TEST_F(PpoReproducibility, SaveThenLoadGivesIdenticalActionsAndState) {
-  const fs::path file = directory_ / "model.pt";
+  const fs::path file = directory_ / "model.ckpt";
   auto env = pendulum(2, /*normalize=*/true);
   Ppo trained(*env, PpoConfig::from_config(Config::parse(kSmallPpo)), 3);
   trained.learn(512);
@@ -104,7 +96,7 @@ TEST_F(PpoReproducibility, SaveThenLoadGivesIdenticalActionsAndState) {
 }
 
 TEST_F(PpoReproducibility, CorruptOrMismatchedCheckpointRaisesAndChangesNothing) {
-  const fs::path file = directory_ / "model.pt";
+  const fs::path file = directory_ / "model.ckpt";
   auto env = pendulum(1);
   Ppo ppo(*env, PpoConfig::from_config(Config::parse(kSmallPpo)), 5);
   ppo.learn(256);
@@ -112,7 +104,7 @@ TEST_F(PpoReproducibility, CorruptOrMismatchedCheckpointRaisesAndChangesNothing)
   std::ifstream in(file, std::ios::binary);
   const std::string bytes(std::istreambuf_iterator<char>(in), {});
 
-  const fs::path truncated = directory_ / "truncated.pt";
+  const fs::path truncated = directory_ / "truncated.ckpt";
   std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() - 100);
 
   auto fresh_env = pendulum(1);
@@ -121,14 +113,14 @@ TEST_F(PpoReproducibility, CorruptOrMismatchedCheckpointRaisesAndChangesNothing)
   const envs::BatchMatrix observations = probe_observations();
   const envs::BatchMatrix actions_before = fresh.predict(observations, true);
   EXPECT_THROW(fresh.load(truncated), Error);
-  EXPECT_THROW(fresh.load(directory_ / "absent.pt"), Error);
+  EXPECT_THROW(fresh.load(directory_ / "absent.ckpt"), Error);
 
   // A checkpoint of a different architecture is refused with a clear error.
   VecEnvOptions cartpole_options;
   cartpole_options.id = "CartPole-v1";
   auto cartpole = make_vec_env(cartpole_options);
   Ppo cartpole_ppo(*cartpole, PpoConfig::from_config(Config::parse(kSmallPpo)), 1);
-  const fs::path cartpole_file = directory_ / "cartpole.pt";
+  const fs::path cartpole_file = directory_ / "cartpole.ckpt";
   cartpole_ppo.save(cartpole_file);
   EXPECT_THROW(fresh.load(cartpole_file), Error);
   Ppo wide(*fresh_env, PpoConfig::from_config(Config::parse("policy: {net_arch: [32]}\n")), 1);
@@ -139,7 +131,7 @@ TEST_F(PpoReproducibility, CorruptOrMismatchedCheckpointRaisesAndChangesNothing)
   EXPECT_EQ(fresh.num_timesteps(), 0);
 
   // Saving into a directory that does not exist fails without touching the good file.
-  EXPECT_THROW(ppo.save(directory_ / "missing" / "model.pt"), Error);
+  EXPECT_THROW(ppo.save(directory_ / "missing" / "model.ckpt"), Error);
   std::ifstream again(file, std::ios::binary);
   EXPECT_EQ(std::string(std::istreambuf_iterator<char>(again), {}), bytes);
 }

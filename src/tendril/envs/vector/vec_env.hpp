@@ -1,72 +1,77 @@
 #pragma once
 
 #include <cstdint>
-#include <exception>
-#include <functional>
 #include <memory>
 #include <optional>
-#include <vector>
 
 #include "tendril/core/env.hpp"
-#include "tendril/envs/vector/thread_pool.hpp"
-#include "tendril/envs/vector/vec_normalize.hpp"
+#include "tendril/core/snapshot.hpp"
 #include "tendril/envs/vector/vec_step.hpp"
 
 namespace tendril::envs {
 
-// N environments stepped in lock-step, with auto-reset (Stable-Baselines3's VecEnv semantics),
-// either in the calling thread (num_threads 1) or on a persistent ThreadPool. Each environment
-// is stepped by exactly one thread per call and writes only its own rows, so the threaded and
-// synchronous modes give bit-identical results. An attached VecNormalize then normalizes the
-// whole batch in the calling thread, so normalization keeps that guarantee.
+class VecNormalize;
+
+// N environments stepped in lock-step with auto-reset (Stable-Baselines3's VecEnv, Gymnasium's
+// VectorEnv): what every learner trains on. Implementations: ThreadedVecEnv (N `Env`s on a
+// thread pool), a batched learned model; wrappers (VecEnvWrapper) change one aspect of the
+// stream — VecNormalize, recorders, safety filters — without touching the others.
 class VecEnv {
  public:
-  // All environments must have the same observation and action spaces (kind and size).
-  VecEnv(std::vector<std::unique_ptr<Env>> envs, int num_threads = 1);
-  // Builds num_envs environments with factory(i).
-  VecEnv(int num_envs, const std::function<std::unique_ptr<Env>(int index)>& factory,
-         int num_threads = 1);
+  virtual ~VecEnv() = default;
 
-  int num_envs() const { return static_cast<int>(envs_.size()); }
-  int num_threads() const { return pool_ ? pool_->num_threads() : 1; }
-  // The space of the observations reset and step return (normalized ones, with a normalizer).
-  const Space& observation_space() const {
-    return normalizer_ ? normalizer_->observation_space() : envs_.front()->observation_space();
-  }
-  const Space& action_space() const { return envs_.front()->action_space(); }
-  Env& env(int i) { return *envs_.at(i); }
+  virtual int num_envs() const = 0;
+  // The spaces of one environment (the observations handed out, e.g. normalized ones).
+  virtual const Space& observation_space() const = 0;
+  virtual const Space& action_space() const = 0;
 
-  // Attaches SB3 VecNormalize semantics — one set of statistics for all environments — to
-  // every later reset and step; the VecEnv must be reset before it steps again. Environment
-  // wrappers, such as EpisodeStatistics, keep seeing raw observations and rewards.
-  VecNormalize& attach_normalizer(const VecNormalize::Options& options);
-  // The attached normalizer, or nullptr.
-  VecNormalize* normalizer() { return normalizer_.get(); }
-  const VecNormalize* normalizer() const { return normalizer_.get(); }
-
-  // Resets every environment, env i with seed + i when a seed is given (otherwise each continues
-  // its own random stream). Returns the (num_envs × observation size) observations; the
+  // Resets every environment, env i with seed + i when a seed is given (otherwise each
+  // continues its own random stream). Returns the (num_envs × observation size) observations;
+  // the reference stays valid until the next reset or step.
+  virtual const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) = 0;
+  // Steps env i with row i of `actions` (num_envs × action size; a Discrete action is its
+  // index), resetting every environment whose episode ended. An error of any environment is
+  // rethrown (the lowest env index's if several fail); the VecEnv must then be reset. The
   // reference stays valid until the next reset or step.
-  const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt);
+  virtual const VecStep& step(const BatchMatrix& actions) = 0;
 
-  // Steps env i with row i of `actions` (num_envs × action size; a Discrete action is its index),
-  // resetting every environment whose episode ended. An error raised by an environment, in any
-  // thread, is rethrown here unchanged (that of the lowest env index if several fail); the
-  // VecEnv must then be reset before stepping again. The reference stays valid until the next
-  // reset or step.
-  const VecStep& step(const BatchMatrix& actions);
+  // Whether every environment can be snapshotted (Env::supports_snapshots).
+  virtual bool supports_snapshots() const = 0;
+  // Writes every wrapper's own state (normalization statistics) and, when `environments` is
+  // true and supports_snapshots(), every environment's state. load_state restores what was
+  // written and returns whether the environments were restored; if not, they must be reset
+  // before the next step. A snapshot of another vector env raises Error.
+  virtual void save_state(SnapshotWriter& out, bool environments) const = 0;
+  virtual bool load_state(SnapshotReader& in) = 0;
 
- private:
-  void for_each_env(const std::function<void(int)>& task);
-  void step_one(int i);
+  // The VecNormalize in this chain, or nullptr: its statistics travel with trained policies.
+  virtual const VecNormalize* normalizer() const { return nullptr; }
+};
 
-  std::vector<std::unique_ptr<Env>> envs_;
-  std::unique_ptr<ThreadPool> pool_;
-  std::unique_ptr<VecNormalize> normalizer_;
-  std::vector<Action> actions_;  // per-env action buffers, reused across steps
-  std::vector<std::exception_ptr> errors_;
-  VecStep result_;
-  bool ready_ = false;  // reset since construction, the last error or attach_normalizer
+// A VecEnv that owns another and changes one aspect of it; the rest is passed through.
+class VecEnvWrapper : public VecEnv {
+ public:
+  explicit VecEnvWrapper(std::unique_ptr<VecEnv> inner);
+
+  int num_envs() const override { return inner_->num_envs(); }
+  const Space& observation_space() const override { return inner_->observation_space(); }
+  const Space& action_space() const override { return inner_->action_space(); }
+  const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) override {
+    return inner_->reset(seed);
+  }
+  const VecStep& step(const BatchMatrix& actions) override { return inner_->step(actions); }
+  bool supports_snapshots() const override { return inner_->supports_snapshots(); }
+  void save_state(SnapshotWriter& out, bool environments) const override {
+    inner_->save_state(out, environments);
+  }
+  bool load_state(SnapshotReader& in) override { return inner_->load_state(in); }
+  const VecNormalize* normalizer() const override { return inner_->normalizer(); }
+
+  VecEnv& inner() { return *inner_; }
+  const VecEnv& inner() const { return *inner_; }
+
+ protected:
+  std::unique_ptr<VecEnv> inner_;
 };
 
 }  // namespace tendril::envs

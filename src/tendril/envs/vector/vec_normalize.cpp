@@ -1,6 +1,8 @@
 #include "tendril/envs/vector/vec_normalize.hpp"
 
+#include <span>
 #include <string>
+#include <vector>
 
 #include "tendril/core/error.hpp"
 
@@ -25,12 +27,13 @@ int checked_num_envs(int num_envs) {
 
 }  // namespace
 
-VecNormalize::VecNormalize(int num_envs, const Space& observation_space, Options options)
-    : options_(options),
-      observation_space_(normalized_space(observation_space, options)),
-      observation_statistics_(observation_space.size()),
-      returns_(Eigen::VectorXd::Zero(checked_num_envs(num_envs))),
-      batch_(num_envs, observation_space.size()) {
+VecNormalize::VecNormalize(std::unique_ptr<VecEnv> inner, Options options)
+    : VecEnvWrapper(std::move(inner)),
+      options_(options),
+      observation_space_(normalized_space(inner_->observation_space(), options)),
+      observation_statistics_(inner_->observation_space().size()),
+      returns_(Eigen::VectorXd::Zero(checked_num_envs(inner_->num_envs()))),
+      batch_(inner_->num_envs(), inner_->observation_space().size()) {
   require(options.clip_observation > 0.0 && options.clip_reward > 0.0, "clips must be positive",
           kWhere);
   require(options.gamma >= 0.0 && options.gamma <= 1.0, "gamma must lie in [0, 1]", kWhere);
@@ -47,7 +50,46 @@ void VecNormalize::normalize_rows(BatchMatrix& rows) const {
   }
 }
 
-void VecNormalize::reset(BatchMatrix& observations) {
+const BatchMatrix& VecNormalize::reset(std::optional<uint64_t> seed) {
+  observations_ = inner_->reset(seed);
+  normalize_reset(observations_);
+  return observations_;
+}
+
+const VecStep& VecNormalize::step(const BatchMatrix& actions) {
+  result_ = inner_->step(actions);
+  normalize_step(result_);
+  return result_;
+}
+
+void VecNormalize::save_state(SnapshotWriter& out, bool environments) const {
+  out.section("VecNormalize");
+  out.put(std::span<const double>(observation_statistics_.to_array()));
+  out.put(std::span<const double>(return_statistics_.to_array()));
+  out.put_matrix(returns_);
+  inner_->save_state(out, environments);
+}
+
+bool VecNormalize::load_state(SnapshotReader& in) {
+  in.section("VecNormalize");
+  std::vector<double> observation(1 + 2 * observation_statistics_.size());
+  in.get(std::span<double>(observation));
+  std::vector<double> returns_array(3);
+  in.get(std::span<double>(returns_array));
+  Eigen::VectorXd returns = returns_;
+  in.get_matrix(returns);
+  const RunningMeanStd observation_statistics =
+      RunningMeanStd::from_array(observation, observation_statistics_.size());
+  const RunningMeanStd return_statistics = RunningMeanStd::from_array(returns_array, 1);
+  require(returns.allFinite(), "running returns must be finite", kWhere);
+  const bool restored = inner_->load_state(in);
+  observation_statistics_ = observation_statistics;
+  return_statistics_ = return_statistics;
+  returns_ = returns;
+  return restored;
+}
+
+void VecNormalize::normalize_reset(BatchMatrix& observations) {
   returns_.setZero();
   if (!options_.normalize_observation) return;
   if (training_) {
@@ -57,7 +99,7 @@ void VecNormalize::reset(BatchMatrix& observations) {
   normalize_rows(observations);
 }
 
-void VecNormalize::step(VecStep& step) {
+void VecNormalize::normalize_step(VecStep& step) {
   if (options_.normalize_observation) {
     // The statistics see the observations handed out (first ones of new episodes where an
     // episode ended), not the final ones; both are normalized with the updated statistics.

@@ -1,8 +1,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
+#include <optional>
 
 #include "tendril/core/env.hpp"
+#include "tendril/envs/vector/vec_env.hpp"
 #include "tendril/envs/vector/vec_step.hpp"
 #include "tendril/envs/wrappers/running_mean_std.hpp"
 
@@ -27,8 +30,10 @@ namespace tendril::envs {
 // SB3 does.
 //
 // The statistics are updated in env-index order from whole batches, so they do not depend on
-// how many threads stepped the environments.
-class VecNormalize {
+// how many threads stepped the environments. Wrappers inside the vector env (EpisodeStatistics)
+// keep seeing raw observations and rewards. The statistics and running returns are part of
+// save_state, whether or not the environments are.
+class VecNormalize : public VecEnvWrapper {
  public:
   struct Options {
     bool normalize_observation = true;
@@ -40,18 +45,20 @@ class VecNormalize {
   };
 
   // Normalizing observations needs a Box observation space; raises Error on bad options.
-  VecNormalize(int num_envs, const Space& observation_space, Options options);
+  VecNormalize(std::unique_ptr<VecEnv> inner, Options options);
 
   const Options& options() const { return options_; }
-  int num_envs() const { return static_cast<int>(returns_.size()); }
   // The space of the observations handed out: Box(size, [−clip_observation, clip_observation])
   // when they are normalized, otherwise the environments' own space.
-  const Space& observation_space() const { return observation_space_; }
+  const Space& observation_space() const override { return observation_space_; }
 
-  // Normalizes a VecEnv's reset batch in place (SB3's VecNormalize.reset).
-  void reset(BatchMatrix& observations);
-  // Normalizes a VecEnv's step in place (SB3's VecNormalize.step_wait).
-  void step(VecStep& step);
+  // SB3's VecNormalize.reset and step_wait: the inner batch, normalized.
+  const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) override;
+  const VecStep& step(const BatchMatrix& actions) override;
+
+  void save_state(SnapshotWriter& out, bool environments) const override;
+  bool load_state(SnapshotReader& in) override;
+  const VecNormalize* normalizer() const override { return this; }
 
   bool training() const { return training_; }
   void set_training(bool training) { training_ = training; }
@@ -67,13 +74,17 @@ class VecNormalize {
 
  private:
   void normalize_rows(BatchMatrix& rows) const;
+  void normalize_reset(BatchMatrix& observations);
+  void normalize_step(VecStep& step);
 
   Options options_;
   Space observation_space_;
   RunningMeanStd observation_statistics_;
   RunningMeanStd return_statistics_{1};
   Eigen::VectorXd returns_;
-  Eigen::MatrixXd batch_;  // the observation batch in double precision, reused across steps
+  Eigen::MatrixXd batch_;     // the observation batch in double precision, reused across steps
+  BatchMatrix observations_;  // the normalized reset batch
+  VecStep result_;            // the normalized step
   bool training_ = true;
 };
 

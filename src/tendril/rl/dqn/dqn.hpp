@@ -7,6 +7,7 @@
 #include "tendril/rl/adam_checkpoint.hpp"
 #include "tendril/rl/dqn/dqn_config.hpp"
 #include "tendril/rl/dqn/dqn_loss.hpp"
+#include "tendril/rl/dqn/q_greedy_policy.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
 
 namespace tendril::rl {
@@ -20,27 +21,25 @@ class Dqn : public OffPolicyAlgorithm {
   Dqn(envs::VecEnv& env, const DqnConfig& config, uint64_t seed);
 
   const DqnConfig& config() const { return config_; }
-  double exploration_rate() const { return exploration_rate_; }
+  const Policy& policy() const override { return policy_; }
+  double exploration_rate() const { return policy_.exploration_rate(); }
 
  protected:
-  void act(const Eigen::Ref<const Eigen::MatrixXf>& observations, ActMode mode, Rng& rng,
-           Eigen::MatrixXf& actions) override;
+  void explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
+               Eigen::MatrixXf& actions) override;
   TrainStats train(int64_t gradient_steps, double progress_remaining) override;
   void after_step() override;
-  void save_state(CheckpointWriter& writer) const override;
-  std::function<void()> prepare_load(CheckpointReader& reader) override;
+  void write_own_state(ArchiveWriter& writer) const override;
+  std::function<void()> read_own_state(const ArchiveReader& reader) override;
 
  private:
   DqnConfig config_;
-  int64_t actions_count_ = 0;
-  nn::DenseMlp q_network_;  // observation → hidden → one Q per action
-  Eigen::VectorXf parameters_, target_, gradient_;
+  QGreedyPolicy policy_;  // the Q-network: its parameters are trained in place
+  Eigen::VectorXf target_, gradient_;
   nn::Adam optimizer_;
   int64_t env_steps_ = 0;  // vector-env steps, for the target-update period
-  double exploration_rate_ = 1.0;
 
   ReplayBuffer::Batch batch_;
-  nn::DenseMlp::Tape tape_;  // of the acting forward pass
   DqnLossWorkspace loss_workspace_;
 };
 

@@ -26,13 +26,7 @@ DqnConfig DqnConfig::from_config(const Config& algo) {
       algo.get_or<double>("exploration_initial_eps", config.exploration_initial_eps);
   config.exploration_final_eps =
       algo.get_or<double>("exploration_final_eps", config.exploration_final_eps);
-  if (algo.has("max_grad_norm")) {
-    if (algo.get<std::string>("max_grad_norm") == "none") {
-      config.max_grad_norm.reset();
-    } else {
-      config.max_grad_norm = algo.get<double>("max_grad_norm");
-    }
-  }
+  config.max_grad_norm = algo.get_optional("max_grad_norm", config.max_grad_norm);
   config.double_q = algo.get_or<bool>("double_q", config.double_q);
   algo.reject_unknown();
   config.validate();

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 
-#include "tendril/nn/dense_actor_critic.hpp"
+#include "tendril/nn/gradient.hpp"
+#include "tendril/rl/adam_checkpoint.hpp"
 #include "tendril/rl/ppo/ppo_loss.hpp"
-#include "tendril/rl/ppo/ppo_minibatches.hpp"
+#include "tendril/rl/rollout_minibatches.hpp"
 
 namespace tendril::rl {
 
@@ -31,35 +32,29 @@ struct StatisticSums {
 Ppo::Ppo(envs::VecEnv& env, const PpoConfig& config, uint64_t seed)
     : OnPolicyAlgorithm("PPO", env, config.common, seed), config_(config) {
   config_.validate();
-  optimizer_ = make_optimizer(mutable_policy());
-}
-
-std::shared_ptr<nn::FlatAdam> Ppo::make_optimizer(nn::ActorCritic& policy) const {
-  nn::FlatAdam::Options options;
+  nn::Adam::Options options;
   options.learning_rate = config_.learning_rate.initial;
   options.epsilon = config_.adam_epsilon;
-  return std::make_shared<nn::FlatAdam>(policy->parameters(), options);
+  optimizer_ = nn::Adam(parameters().size(), options);
+  gradient_ = Eigen::VectorXf::Zero(parameters().size());
 }
 
 // One PPO update (Schulman et al. 2017, Algorithm 1): optimise the surrogate
 //   L^{CLIP+VF+S}(θ) = Ê_t[ L^CLIP_t(θ) − c₁ L^VF_t(θ) + c₂ S[π_θ](s_t) ]        (eq. 9)
 // by minibatch Adam over K epochs of the rollout just collected. Forward and backward passes
-// are written out by hand (nn::DenseActorCritic, ppo_loss) and read and write the flat
-// parameter and gradient buffers of the optimizer, which the module's parameters view.
+// are written out by hand (nn::ActorCritic, ppo_loss) over the policy's flat parameters.
 TrainStats Ppo::train(double progress_remaining) {
   const double learning_rate = config_.learning_rate.at(progress_remaining);
   const PpoLossSettings settings{.clip_range = config_.clip_range.at(progress_remaining),
                                  .clip_range_vf = config_.clip_range_vf,
                                  .ent_coef = config_.ent_coef,
                                  .vf_coef = config_.vf_coef};
-  optimizer_->set_learning_rate(learning_rate);
-  nn::FlatParameters& flat = optimizer_->parameters();
-  const nn::DenseActorCritic network(*mutable_policy(), flat);
-  const Eigen::Map<const Eigen::VectorXf> parameters(flat.values().data_ptr<float>(), flat.numel());
-  Eigen::Map<Eigen::VectorXf> gradient(flat.gradients().data_ptr<float>(), flat.numel());
-  nn::DenseActorCritic::Tape tape;
+  optimizer_.set_learning_rate(learning_rate);
+  const nn::ActorCritic& network = this->network();
+  Eigen::VectorXf& parameters = this->parameters();
+  nn::ActorCritic::Tape tape;
   PpoSampleGradients sample_gradients;
-  PpoMinibatches minibatches(buffer(), config_.batch_size);
+  RolloutMinibatches minibatches(buffer(), config_.batch_size);
 
   StatisticSums sums;
   int64_t updates = 0;
@@ -67,7 +62,7 @@ TrainStats Ppo::train(double progress_remaining) {
   for (int64_t epoch = 0; epoch < config_.n_epochs && !stopped_early; ++epoch) {
     minibatches.shuffle(shuffle_rng(), config_.common.normalize_advantage);
     for (int64_t index = 0; index < minibatches.count(); ++index) {
-      const PpoMinibatch batch = minibatches[index];
+      const RolloutMinibatch batch = minibatches[index];
       network.evaluate(parameters, batch.observations, batch.actions, tape);
       const PpoLossTerms terms =
           ppo_loss(batch, tape.log_prob, tape.entropy, tape.value, settings, sample_gradients);
@@ -77,14 +72,13 @@ TrainStats Ppo::train(double progress_remaining) {
         stopped_early = true;
         break;
       }
-      gradient.setZero();
+      gradient_.setZero();
       network.backward(parameters, tape, sample_gradients.log_prob, sample_gradients.entropy,
-                       sample_gradients.value, gradient);
-      if (config_.max_grad_norm) flat.clip_grad_norm(*config_.max_grad_norm);
-      optimizer_->step();
+                       sample_gradients.value, gradient_);
+      if (config_.max_grad_norm) nn::clip_grad_norm(gradient_, *config_.max_grad_norm);
+      optimizer_.step(parameters, gradient_);
     }
   }
-  sync_inference();
 
   const double count = static_cast<double>(std::max<int64_t>(updates, 1));
   TrainStats stats = {
@@ -99,23 +93,17 @@ TrainStats Ppo::train(double progress_remaining) {
       {"train/clip_range", settings.clip_range},
       {"train/learning_rate", learning_rate},
   };
-  if (!mutable_policy()->spec().discrete) {
-    stats.emplace_back("train/std", torch::exp(mutable_policy()->log_std()).mean().item<double>());
+  if (!network.spec().discrete) {
+    const auto log_std = parameters.segment(network.log_std_offset(), network.spec().action_size);
+    stats.emplace_back("train/std", log_std.array().exp().cast<double>().mean());
   }
   return stats;
 }
 
-void Ppo::save_optimizers(CheckpointWriter& writer) const {
-  torch::serialize::OutputArchive archive;
-  optimizer_->save(archive);
-  writer.archive().write("optimizer", archive);
-}
+void Ppo::write_optimizers(ArchiveWriter& writer) const { save_adam(writer, "adam", optimizer_); }
 
-std::function<void()> Ppo::prepare_load(CheckpointReader& reader, nn::ActorCritic& policy) {
-  std::shared_ptr<nn::FlatAdam> optimizer = make_optimizer(policy);
-  reader.read_nested("optimizer",
-                     [&](torch::serialize::InputArchive& archive) { optimizer->load(archive); });
-  return [this, optimizer] { optimizer_ = optimizer; };
+std::function<void()> Ppo::read_optimizers(const ArchiveReader& reader) {
+  return prepare_adam(reader, "adam", optimizer_, parameters().size());
 }
 
 }  // namespace tendril::rl

@@ -4,18 +4,6 @@
 
 namespace tendril::rl {
 
-namespace {
-
-// A number, or `none` to turn the feature off.
-std::optional<double> read_optional(const Config& algo, const char* key,
-                                    const std::optional<double>& fallback) {
-  if (!algo.has(key)) return fallback;
-  if (algo.get<std::string>(key) == "none") return std::nullopt;
-  return algo.get<double>(key);
-}
-
-}  // namespace
-
 PpoConfig PpoConfig::sb3() { return PpoConfig{}; }
 
 PpoConfig PpoConfig::ppo1() {
@@ -40,19 +28,18 @@ PpoConfig PpoConfig::from_config(const Config& algo) {
   if (preset == "ppo1") {
     config = ppo1();
   } else if (preset != "sb3") {
-    throw Error("unknown PPO preset '" + preset + "', expected sb3 or ppo1",
-                algo.source() + ": " + (algo.path().empty() ? "" : algo.path() + ".") + "preset");
+    throw Error("unknown PPO preset '" + preset + "', expected sb3 or ppo1", algo.where("preset"));
   }
   config.common.read(algo);
   config.batch_size = algo.get_or<int64_t>("batch_size", config.batch_size);
   config.n_epochs = algo.get_or<int64_t>("n_epochs", config.n_epochs);
   config.learning_rate = read_schedule(algo, "learning_rate", config.learning_rate);
   config.clip_range = read_schedule(algo, "clip_range", config.clip_range);
-  config.clip_range_vf = read_optional(algo, "clip_range_vf", config.clip_range_vf);
+  config.clip_range_vf = algo.get_optional("clip_range_vf", config.clip_range_vf);
   config.ent_coef = algo.get_or<double>("ent_coef", config.ent_coef);
   config.vf_coef = algo.get_or<double>("vf_coef", config.vf_coef);
-  config.max_grad_norm = read_optional(algo, "max_grad_norm", config.max_grad_norm);
-  config.target_kl = read_optional(algo, "target_kl", config.target_kl);
+  config.max_grad_norm = algo.get_optional("max_grad_norm", config.max_grad_norm);
+  config.target_kl = algo.get_optional("target_kl", config.target_kl);
   config.adam_epsilon = algo.get_or<double>("adam_epsilon", config.adam_epsilon);
   algo.reject_unknown();
   config.validate();

@@ -6,7 +6,7 @@
 
 namespace tendril::rl {
 
-PpoLossTerms ppo_loss(const PpoMinibatch& batch,
+PpoLossTerms ppo_loss(const RolloutMinibatch& batch,
                       const Eigen::Ref<const Eigen::RowVectorXf>& log_prob,
                       const Eigen::Ref<const Eigen::RowVectorXf>& entropy,
                       const Eigen::Ref<const Eigen::RowVectorXf>& value,

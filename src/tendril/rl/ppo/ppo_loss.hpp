@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "tendril/rl/ppo/ppo_minibatches.hpp"
+#include "tendril/rl/rollout_minibatches.hpp"
 
 namespace tendril::rl {
 
@@ -36,7 +36,7 @@ struct PpoSampleGradients {
 // to them into `gradients`. The derivatives follow LibTorch's conventions at kinks, so they
 // equal autograd's: min(x, y) sends half the gradient to each argument on a tie, clamp passes
 // it on its closed interval.
-PpoLossTerms ppo_loss(const PpoMinibatch& batch,
+PpoLossTerms ppo_loss(const RolloutMinibatch& batch,
                       const Eigen::Ref<const Eigen::RowVectorXf>& log_prob,
                       const Eigen::Ref<const Eigen::RowVectorXf>& entropy,
                       const Eigen::Ref<const Eigen::RowVectorXf>& value,

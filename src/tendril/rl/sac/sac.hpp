@@ -8,8 +8,7 @@
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/q_critics.hpp"
 #include "tendril/rl/sac/sac_config.hpp"
-#include "tendril/rl/sac/squashed_gaussian.hpp"
-#include "tendril/rl/sac/state_dependent_noise.hpp"
+#include "tendril/rl/sac/squashed_gaussian_policy.hpp"
 
 namespace tendril::rl {
 
@@ -24,44 +23,24 @@ class Sac : public OffPolicyAlgorithm {
   Sac(envs::VecEnv& env, const SacConfig& config, uint64_t seed);
 
   const SacConfig& config() const { return config_; }
+  const Policy& policy() const override { return policy_; }
   double entropy_coefficient() const;
 
  protected:
-  void act(const Eigen::Ref<const Eigen::MatrixXf>& observations, ActMode mode, Rng& rng,
-           Eigen::MatrixXf& actions) override;
+  void explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
+               Eigen::MatrixXf& actions) override;
   TrainStats train(int64_t gradient_steps, double progress_remaining) override;
   void collection_started() override { resample_exploration_ = true; }
-  void save_state(CheckpointWriter& writer) const override;
-  std::function<void()> prepare_load(CheckpointReader& reader) override;
+  void write_own_state(ArchiveWriter& writer) const override;
+  std::function<void()> read_own_state(const ArchiveReader& reader) override;
 
  private:
-  // One reparameterised draw per column, with the actor pass behind it: a = tanh(μ + σ ε), or
-  // with gSDE a = tanh(μ + z W) for the exploration matrix E behind W.
-  struct PolicySample {
-    nn::DenseMlp::Tape tape;
-    SquashedGaussianSample gaussian;
-    StateDependentNoiseSample sde;
-  };
-  // Draws ε from `rng`; with gSDE uses `exploration` as E.
-  void sample_policy(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
-                     const Eigen::MatrixXf& exploration, PolicySample& sample) const;
-  const Eigen::MatrixXf& actions_of(const PolicySample& sample) const {
-    return config_.use_sde ? sample.sde.actions : sample.gaussian.actions;
-  }
-  const Eigen::VectorXf& log_probs_of(const PolicySample& sample) const {
-    return config_.use_sde ? sample.sde.log_probs : sample.gaussian.log_probs;
-  }
-  // gSDE: the latent features z (last hidden layer) of the actor pass, and log σ (the actor
-  // parameters after the network's).
-  const Eigen::MatrixXf& latent_of(const nn::DenseMlp::Tape& tape) const;
-  Eigen::Map<const Eigen::MatrixXf> log_std() const;
-  Eigen::MatrixXf standard_normal_matrix(Rng& rng) const;  // E, latent × action_size
+  using PolicySample = SquashedGaussianPolicy::Sample;
 
   SacConfig config_;
   double target_entropy_ = 0.0;
-  nn::DenseMlp actor_;  // observation → hidden → [μ; log σ], or μ with gSDE
-  int64_t latent_size_ = 0;
-  Eigen::VectorXf actor_parameters_, actor_gradient_;  // the network's, then gSDE's log σ
+  SquashedGaussianPolicy policy_;   // the actor: its parameters are trained in place
+  Eigen::VectorXf actor_gradient_;  // of the network's weights, then gSDE's log σ
   nn::Adam actor_optimizer_;
   QCritics critics_;
   Eigen::VectorXf log_ent_coef_;  // one entry: log α
@@ -72,7 +51,6 @@ class Sac : public OffPolicyAlgorithm {
   PolicySample current_, next_;
   Eigen::MatrixXf critic_inputs_, value_gradient_, input_gradient_, actor_output_gradient_;
   std::vector<Eigen::MatrixXf> actor_scratch_;
-  nn::DenseMlp::Tape act_tape_;
   Eigen::MatrixXf exploration_;                   // E of the current gradient step (gSDE)
   std::vector<Eigen::MatrixXf> env_exploration_;  // E of each env while collecting (gSDE)
   bool resample_exploration_ = true;

@@ -19,7 +19,7 @@ SacConfig SacConfig::sb2() {
 SacConfig SacConfig::from_config(const Config& algo) {
   SacConfig config = read_preset(algo, {"sb3", "sb2"}, "SAC") == "sb2" ? sb2() : sb3();
   config.common.read(algo);
-  const std::string where = algo.source() + ": " + (algo.path().empty() ? "" : algo.path() + ".");
+
   if (algo.has("ent_coef")) {
     const std::string text = algo.get<std::string>("ent_coef");
     if (text.rfind("auto", 0) == 0) {
@@ -29,33 +29,21 @@ SacConfig SacConfig::from_config(const Config& algo) {
           config.ent_coef = std::stod(text.substr(5));
         } catch (const std::exception&) {
           throw Error("expected auto, auto_<initial value> or a number, got '" + text + "'",
-                      where + "ent_coef");
+                      algo.where("ent_coef"));
         }
       } else if (text != "auto") {
         throw Error("expected auto, auto_<initial value> or a number, got '" + text + "'",
-                    where + "ent_coef");
+                    algo.where("ent_coef"));
       }
     } else {
       config.auto_entropy = false;
       config.ent_coef = algo.get<double>("ent_coef");
     }
   }
-  if (algo.has("target_entropy")) {
-    if (algo.get<std::string>("target_entropy") == "auto") {
-      config.target_entropy.reset();
-    } else {
-      config.target_entropy = algo.get<double>("target_entropy");
-    }
-  }
+  config.target_entropy = algo.get_optional("target_entropy", config.target_entropy, "auto");
   config.target_update_interval =
       algo.get_or<int64_t>("target_update_interval", config.target_update_interval);
-  if (algo.has("q_clip")) {
-    if (algo.get<std::string>("q_clip") == "none") {
-      config.q_clip.reset();
-    } else {
-      config.q_clip = algo.get<double>("q_clip");
-    }
-  }
+  config.q_clip = algo.get_optional("q_clip", config.q_clip);
   config.use_sde = algo.get_or<bool>("use_sde", config.use_sde);
   config.sde_sample_freq = algo.get_or<int64_t>("sde_sample_freq", config.sde_sample_freq);
   config.log_std_init = algo.get_or<double>("log_std_init", config.log_std_init);

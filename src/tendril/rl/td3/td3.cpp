@@ -1,30 +1,22 @@
 #include "tendril/rl/td3/td3.hpp"
 
 #include "tendril/core/error.hpp"
+#include "tendril/nn/gradient.hpp"
 
 namespace tendril::rl {
 
-namespace {
-
-constexpr uint64_t kInitStream = 100;
-
-}  // namespace
-
-Td3::Td3(envs::VecEnv& env, const Td3Config& config, uint64_t seed, bool ddpg)
-    : OffPolicyAlgorithm(ddpg ? "DDPG" : "TD3", env, config.common, seed), config_(config) {
+Td3::Td3(envs::VecEnv& env, const Td3Config& config, uint64_t seed, Td3Variant variant)
+    : OffPolicyAlgorithm(variant == Td3Variant::kDdpg ? "DDPG" : "TD3", env, config.common, seed),
+      config_(config),
+      policy_(env.observation_space(), env.action_space(), config.common.net_arch,
+              config.common.activation) {
   config_.validate(name() + " config");
-  require(env.action_space().is_box(),
-          name() + " needs a Box action space, not " + env.action_space().describe(), name());
-  Rng init_rng(seed, kInitStream);
-  std::vector<int64_t> sizes{observation_size()};
-  sizes.insert(sizes.end(), config_.common.net_arch.begin(), config_.common.net_arch.end());
-  sizes.push_back(action_size());
-  actor_ = nn::DenseMlp(sizes, config_.common.activation, /*tanh_output=*/true);
-  actor_parameters_.resize(actor_.parameter_count());
-  actor_.initialize(actor_parameters_, init_rng);
-  actor_target_ = actor_parameters_;
-  actor_gradient_ = Eigen::VectorXf::Zero(actor_.parameter_count());
-  actor_optimizer_ = nn::Adam(actor_.parameter_count(), {config_.common.learning_rate.initial});
+  Rng init_rng = init_stream();
+  Eigen::VectorXf& parameters = policy_.parameters();
+  policy_.network().initialize(parameters, init_rng);
+  actor_target_ = parameters;
+  actor_gradient_ = Eigen::VectorXf::Zero(parameters.size());
+  actor_optimizer_ = nn::Adam(parameters.size(), {config_.common.learning_rate.initial});
   critics_ = QCritics(config_.n_critics, observation_size(), action_size(),
                       config_.common.critic_arch(), config_.common.activation,
                       config_.critic_learning_rate.value_or(config_.common.learning_rate.initial),
@@ -32,11 +24,11 @@ Td3::Td3(envs::VecEnv& env, const Td3Config& config, uint64_t seed, bool ddpg)
   noise_ = ActionNoise(config_.action_noise, num_envs(), action_size());
 }
 
-void Td3::act(const Eigen::Ref<const Eigen::MatrixXf>& observations, ActMode mode, Rng& rng,
-              Eigen::MatrixXf& actions) {
-  actor_.forward(actor_parameters_, observations, actor_tape_);
+void Td3::explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
+                  Eigen::MatrixXf& actions) {
+  policy_.network().forward(policy_.parameters(), observations, actor_tape_);
   actions = actor_tape_.output();
-  if (mode == ActMode::kCollect && noise_.active()) {
+  if (noise_.active()) {
     noise_.add(actions, rng);
     actions = actions.cwiseMax(-1.0f).cwiseMin(1.0f);
   }
@@ -58,7 +50,7 @@ TrainStats Td3::train(int64_t gradient_steps, double progress_remaining) {
     buffer().sample(batch_size, sample_rng(), batch_);
 
     // y = r + γ (1 − d) min_i Q̄_i(s', clip(π̄(s') + clip(ε, −c, c), −1, 1))  (TD3 eq. 15, 18)
-    actor_.forward(actor_target_, batch_.next_observations, actor_tape_);
+    policy_.network().forward(actor_target_, batch_.next_observations, actor_tape_);
     next_actions_ = actor_tape_.output();
     if (target_noise > 0.0f) {
       for (Eigen::Index i = 0; i < next_actions_.size(); ++i) {
@@ -84,22 +76,23 @@ TrainStats Td3::train(int64_t gradient_steps, double progress_remaining) {
 
     // Delayed actor step on −mean Q_1(s, π(s)) (deterministic policy gradient), then targets.
     if (gradient_updates() % config_.policy_delay != 0) continue;
-    actor_.forward(actor_parameters_, batch_.observations, actor_tape_);
+    const nn::DenseMlp& actor = policy_.network();
+    Eigen::VectorXf& actor_parameters = policy_.parameters();
+    actor.forward(actor_parameters, batch_.observations, actor_tape_);
     concatenate_rows(batch_.observations, actor_tape_.output(), critic_inputs_);
     critics_.forward(critic_inputs_, /*target=*/false, /*first=*/1);
     actor_loss_sum += -static_cast<double>(critics_.values().row(0).mean());
     value_gradient_.setConstant(1, batch_size, -inverse_batch);
     critics_.backward(value_gradient_, /*parameters=*/false, &input_gradient_);
-    actor_.backward(actor_parameters_, actor_tape_, input_gradient_.bottomRows(action_size()),
-                    actor_gradient_, nullptr, actor_scratch_);
+    actor.backward(actor_parameters, actor_tape_, input_gradient_.bottomRows(action_size()),
+                   actor_gradient_, nullptr, actor_scratch_);
     actor_optimizer_.set_learning_rate(learning_rate);
-    actor_optimizer_.step(actor_parameters_, actor_gradient_);
+    actor_optimizer_.step(actor_parameters, actor_gradient_);
     actor_gradient_.setZero();
     ++actor_steps;
 
     critics_.update_target(config_.common.tau);
-    const auto tau = static_cast<float>(config_.common.tau);
-    actor_target_ = (1.0f - tau) * actor_target_ + tau * actor_parameters_;
+    nn::polyak_update(actor_target_, actor_parameters, config_.common.tau);
   }
   TrainStats stats{{"train/critic_loss", critic_loss_sum / static_cast<double>(gradient_steps)},
                    {"train/learning_rate", learning_rate}};
@@ -109,26 +102,26 @@ TrainStats Td3::train(int64_t gradient_steps, double progress_remaining) {
   return stats;
 }
 
-void Td3::save_state(CheckpointWriter& writer) const {
-  writer.write_floats("actor_parameters", actor_parameters_);
-  writer.write_floats("actor_target", actor_target_);
+void Td3::write_own_state(ArchiveWriter& writer) const {
+  writer.put_floats("actor_parameters", policy_.parameters());
+  writer.put_floats("actor_target", actor_target_);
   save_adam(writer, "actor_adam", actor_optimizer_);
   critics_.save(writer, "critics");
   const Eigen::MatrixXf& noise = noise_.state();
-  writer.write_floats("noise_state", Eigen::Map<const Eigen::VectorXf>(noise.data(), noise.size()));
+  writer.put_floats("noise_state", Eigen::Map<const Eigen::VectorXf>(noise.data(), noise.size()));
 }
 
-std::function<void()> Td3::prepare_load(CheckpointReader& reader) {
-  const auto count = actor_parameters_.size();
-  Eigen::VectorXf actor = reader.read_floats("actor_parameters", count);
-  Eigen::VectorXf target = reader.read_floats("actor_target", count);
+std::function<void()> Td3::read_own_state(const ArchiveReader& reader) {
+  const auto count = policy_.parameters().size();
+  Eigen::VectorXf actor = reader.get_floats("actor_parameters", count);
+  Eigen::VectorXf target = reader.get_floats("actor_target", count);
   auto install_adam = prepare_adam(reader, "actor_adam", actor_optimizer_, count);
   auto install_critics = critics_.prepare_load(reader, "critics");
-  const Eigen::VectorXf noise = reader.read_floats("noise_state", noise_.state().size());
+  const Eigen::VectorXf noise = reader.get_floats("noise_state", noise_.state().size());
   const Eigen::MatrixXf noise_state =
       Eigen::Map<const Eigen::MatrixXf>(noise.data(), noise_.state().rows(), noise_.state().cols());
   return [=, this] {
-    actor_parameters_ = actor;
+    policy_.parameters() = actor;
     actor_target_ = target;
     install_adam();
     install_critics();

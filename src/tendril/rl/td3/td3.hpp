@@ -8,6 +8,7 @@
 #include "tendril/rl/adam_checkpoint.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/q_critics.hpp"
+#include "tendril/rl/td3/deterministic_policy.hpp"
 #include "tendril/rl/td3/td3_config.hpp"
 
 namespace tendril::rl {
@@ -19,22 +20,24 @@ namespace tendril::rl {
 // Box action spaces only.
 class Td3 : public OffPolicyAlgorithm {
  public:
-  Td3(envs::VecEnv& env, const Td3Config& config, uint64_t seed, bool ddpg = false);
+  Td3(envs::VecEnv& env, const Td3Config& config, uint64_t seed,
+      Td3Variant variant = Td3Variant::kTd3);
 
   const Td3Config& config() const { return config_; }
+  const Policy& policy() const override { return policy_; }
 
  protected:
-  void act(const Eigen::Ref<const Eigen::MatrixXf>& observations, ActMode mode, Rng& rng,
-           Eigen::MatrixXf& actions) override;
+  void explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
+               Eigen::MatrixXf& actions) override;
   TrainStats train(int64_t gradient_steps, double progress_remaining) override;
   void episode_ended(int env_index) override { noise_.reset(env_index); }
-  void save_state(CheckpointWriter& writer) const override;
-  std::function<void()> prepare_load(CheckpointReader& reader) override;
+  void write_own_state(ArchiveWriter& writer) const override;
+  std::function<void()> read_own_state(const ArchiveReader& reader) override;
 
  private:
   Td3Config config_;
-  nn::DenseMlp actor_;  // observation → hidden → tanh action
-  Eigen::VectorXf actor_parameters_, actor_target_, actor_gradient_;
+  DeterministicPolicy policy_;  // the actor: its parameters are trained in place
+  Eigen::VectorXf actor_target_, actor_gradient_;
   nn::Adam actor_optimizer_;
   QCritics critics_;
   ActionNoise noise_;

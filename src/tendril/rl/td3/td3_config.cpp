@@ -14,7 +14,8 @@ void make_ddpg(Td3Config& config) {
 
 }  // namespace
 
-Td3Config Td3Config::sb3(bool ddpg) {
+Td3Config Td3Config::sb3(Td3Variant variant) {
+  const bool ddpg = variant == Td3Variant::kDdpg;
   Td3Config config;
   config.common.learning_rate = {1e-3, false};
   config.common.net_arch = {400, 300};
@@ -22,7 +23,8 @@ Td3Config Td3Config::sb3(bool ddpg) {
   return config;
 }
 
-Td3Config Td3Config::sb2(bool ddpg) {
+Td3Config Td3Config::sb2(Td3Variant variant) {
+  const bool ddpg = variant == Td3Variant::kDdpg;
   Td3Config config;
   config.common.buffer_size = 50'000;
   config.common.batch_size = 128;
@@ -41,9 +43,10 @@ Td3Config Td3Config::sb2(bool ddpg) {
   return config;
 }
 
-Td3Config Td3Config::from_config(const Config& algo, bool ddpg) {
+Td3Config Td3Config::from_config(const Config& algo, Td3Variant variant) {
+  const bool ddpg = variant == Td3Variant::kDdpg;
   const std::string name = ddpg ? "DDPG" : "TD3";
-  Td3Config config = read_preset(algo, {"sb3", "sb2"}, name) == "sb2" ? sb2(ddpg) : sb3(ddpg);
+  Td3Config config = read_preset(algo, {"sb3", "sb2"}, name) == "sb2" ? sb2(variant) : sb3(variant);
   config.common.read(algo);
   if (!ddpg) {
     config.n_critics = algo.get_or<int>("n_critics", config.n_critics);
@@ -52,9 +55,8 @@ Td3Config Td3Config::from_config(const Config& algo, bool ddpg) {
         algo.get_or<double>("target_policy_noise", config.target_policy_noise);
     config.target_noise_clip = algo.get_or<double>("target_noise_clip", config.target_noise_clip);
   }
-  if (algo.has("critic_learning_rate")) {
-    config.critic_learning_rate = algo.get<double>("critic_learning_rate");
-  }
+  config.critic_learning_rate =
+      algo.get_optional("critic_learning_rate", config.critic_learning_rate, "learning_rate");
   config.action_noise.read(algo);
   algo.reject_unknown();
   config.validate(name + " config");

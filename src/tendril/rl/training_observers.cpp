@@ -1,0 +1,210 @@
+#include "tendril/rl/training_observers.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <sstream>
+#include <string>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::rl {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_between(Clock::time_point start, Clock::time_point end) {
+  return std::chrono::duration<double>(end - start).count();
+}
+
+// The shortest decimal text that reads back as exactly `value`: a resumed run recalls its best
+// evaluation from eval.csv and must compare as the uninterrupted run does.
+std::string exact_text(double value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
+std::string duration_text(double seconds) {
+  const auto total = static_cast<long long>(seconds + 0.5);
+  char text[32];
+  if (total >= 3600) {
+    std::snprintf(text, sizeof text, "%lldh%02lldm", total / 3600, total / 60 % 60);
+  } else {
+    std::snprintf(text, sizeof text, "%lldm%02llds", total / 60, total % 60);
+  }
+  return text;
+}
+
+// Whether the step count crossed a multiple of `every` since `previous`.
+bool crossed(int64_t every, int64_t previous, int64_t now) {
+  return every > 0 && now / every > previous / every;
+}
+
+}  // namespace
+
+fs::path checkpoint_path(const fs::path& run, int64_t steps) {
+  return run / "checkpoints" / ("step_" + std::to_string(steps) + ".ckpt");
+}
+
+fs::path buffer_path(const fs::path& checkpoint) {
+  return fs::path(checkpoint).replace_extension(".buffer");
+}
+
+ScalarLogObserver::ScalarLogObserver(const fs::path& directory, bool resuming, int64_t first_step)
+    : log_(directory, resuming), start_(Clock::now()), first_step_(first_step) {}
+
+bool ScalarLogObserver::on_iteration(const Progress& p) {
+  const double elapsed = seconds_between(start_, Clock::now());
+  const double fps = static_cast<double>(p.timesteps - first_step_) / std::max(elapsed, 1e-9);
+  log_.record("time/total_timesteps", static_cast<double>(p.timesteps));
+  log_.record("time/iterations", static_cast<double>(p.iterations));
+  log_.record("time/fps", fps);
+  log_.record("time/time_elapsed", elapsed);
+  if (p.episodes > 0) {
+    log_.record("rollout/ep_rew_mean", p.episode_return_mean);
+    log_.record("rollout/ep_len_mean", p.episode_length_mean);
+  }
+  for (const auto& [name, value] : p.train) log_.record(name, value);
+  log_.dump(p.timesteps);
+  return true;
+}
+
+EvaluationObserver::EvaluationObserver(const Experiment& experiment, const fs::path& directory,
+                                       Algorithm& algorithm, const envs::VecEnv& training_env,
+                                       bool resuming)
+    : experiment_(experiment),
+      directory_(directory),
+      algorithm_(algorithm),
+      training_env_(training_env),
+      last_timesteps_(algorithm.num_timesteps()) {
+  const bool exists = fs::exists(directory_ / "eval.csv");
+  file_.open(directory_ / "eval.csv", std::ios::app);
+  if (!exists) file_ << "timesteps,mean_return,std_return,mean_length,episodes\n";
+  if (resuming && experiment_.eval_save_best) recall_best(last_timesteps_);
+}
+
+bool EvaluationObserver::on_iteration(const Progress& progress) {
+  const int64_t previous = last_timesteps_;
+  last_timesteps_ = progress.timesteps;
+  if (crossed(experiment_.eval_freq, previous, progress.timesteps) &&
+      progress.timesteps < experiment_.n_timesteps) {
+    evaluate(progress.timesteps);
+  }
+  return true;
+}
+
+EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
+  // A stream of its own per evaluation point, so evaluating never disturbs training.
+  const std::unique_ptr<Env> env = make_evaluation_env(experiment_.env, training_env_);
+  const EvaluationResult eval =
+      evaluate_policy(algorithm_.policy(), *env, experiment_.eval_episodes,
+                      experiment_.eval_deterministic, experiment_.seed + 1000003 + timesteps);
+  double mean_length = 0.0;
+  for (int64_t length : eval.lengths) mean_length += static_cast<double>(length);
+  mean_length /= static_cast<double>(eval.lengths.size());
+  file_ << timesteps << ',' << exact_text(eval.mean_return()) << ','
+        << exact_text(eval.std_return()) << ',' << mean_length << ',' << eval.returns.size()
+        << '\n';
+  file_.flush();
+  if (experiment_.eval_save_best && (!best_mean_ || eval.mean_return() >= *best_mean_)) {
+    algorithm_.save_policy(directory_ / "best_model.policy");
+    best_mean_ = eval.mean_return();
+    best_timesteps_ = timesteps;
+  }
+  return eval;
+}
+
+void EvaluationObserver::recall_best(int64_t up_to) {
+  std::ifstream in(directory_ / "eval.csv");
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::string timesteps_cell, mean_cell;
+    std::getline(cells, timesteps_cell, ',');
+    std::getline(cells, mean_cell, ',');
+    try {
+      const int64_t timesteps = std::stoll(timesteps_cell);
+      const double mean = std::stod(mean_cell);
+      if (timesteps > up_to) continue;
+      if (!best_mean_ || mean >= *best_mean_) {
+        best_mean_ = mean;
+        best_timesteps_ = timesteps;
+      }
+    } catch (const std::exception&) {
+      throw Error("unreadable row '" + line + "'", (directory_ / "eval.csv").string());
+    }
+  }
+}
+
+CheckpointObserver::CheckpointObserver(const Experiment& experiment, const fs::path& directory,
+                                       Algorithm& algorithm, std::optional<int64_t> stop_at,
+                                       fs::path last_buffer)
+    : experiment_(experiment),
+      directory_(directory),
+      algorithm_(algorithm),
+      stop_at_(stop_at),
+      last_buffer_(std::move(last_buffer)),
+      last_timesteps_(algorithm.num_timesteps()) {}
+
+bool CheckpointObserver::on_iteration(const Progress& progress) {
+  const int64_t previous = last_timesteps_;
+  last_timesteps_ = progress.timesteps;
+  if (!crossed(experiment_.checkpoint_freq, previous, progress.timesteps) ||
+      progress.timesteps >= experiment_.n_timesteps) {
+    return true;
+  }
+  save(progress.timesteps);
+  return !(stop_at_ && progress.timesteps >= *stop_at_);
+}
+
+// The replay buffer goes first, so a checkpoint never exists without the buffer it needs; the
+// previous checkpoint's buffer is then removed (buffers can be large).
+void CheckpointObserver::save(int64_t timesteps) {
+  const fs::path checkpoint = checkpoint_path(directory_, timesteps);
+  const bool with_buffer = algorithm_.has_replay_buffer() && experiment_.save_replay_buffer;
+  if (with_buffer) algorithm_.save_replay_buffer(buffer_path(checkpoint));
+  const bool holds_environments = algorithm_.checkpoints_hold_environments();
+  algorithm_.save(checkpoint);
+  // Without the environments in the checkpoint, a resumed run restarts them here: so does
+  // this one, and both compute the same.
+  if (!holds_environments) algorithm_.request_seeded_reset();
+  if (with_buffer && !last_buffer_.empty()) fs::remove(last_buffer_);
+  if (with_buffer) last_buffer_ = buffer_path(checkpoint);
+}
+
+ProgressLine::ProgressLine(int64_t total_timesteps, int64_t first_step)
+    : total_timesteps_(total_timesteps),
+      first_step_(first_step),
+      start_(Clock::now()),
+      last_print_(start_) {}
+
+bool ProgressLine::on_iteration(const Progress& progress) {
+  last_ = progress;
+  const auto now = Clock::now();
+  if (seconds_between(last_print_, now) >= 1.0) print(progress);
+  return true;
+}
+
+void ProgressLine::finish() {
+  if (last_) print(*last_);
+  std::fputc('\n', stderr);
+}
+
+void ProgressLine::print(const Progress& p) {
+  const auto now = Clock::now();
+  last_print_ = now;
+  const double fps =
+      static_cast<double>(p.timesteps - first_step_) / std::max(seconds_between(start_, now), 1e-9);
+  const double remaining = static_cast<double>(total_timesteps_ - p.timesteps) / fps;
+  std::fprintf(stderr, "\rsteps %lld/%lld (%.1f%%)  %.0f steps/s  ep_rew_mean %s  ETA %s   ",
+               static_cast<long long>(p.timesteps), static_cast<long long>(total_timesteps_),
+               100.0 * static_cast<double>(p.timesteps) / static_cast<double>(total_timesteps_),
+               fps, p.episodes > 0 ? std::to_string(p.episode_return_mean).c_str() : "-",
+               duration_text(std::max(remaining, 0.0)).c_str());
+  std::fflush(stderr);
+}
+
+}  // namespace tendril::rl

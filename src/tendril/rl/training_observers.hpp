@@ -1,0 +1,99 @@
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+
+#include "tendril/core/scalar_log.hpp"
+#include "tendril/rl/algorithm.hpp"
+#include "tendril/rl/evaluation.hpp"
+#include "tendril/rl/experiment.hpp"
+
+namespace tendril::rl {
+
+// The observers a training run is made of (rl/trainer): each does one job on the iterations
+// the algorithm reports.
+
+// progress.csv and the TensorBoard event file (core/scalar_log), Stable-Baselines3's names.
+class ScalarLogObserver : public Observer {
+ public:
+  ScalarLogObserver(const std::filesystem::path& directory, bool resuming, int64_t first_step);
+  bool on_iteration(const Progress& progress) override;
+
+ private:
+  ScalarLog log_;
+  std::chrono::steady_clock::time_point start_;
+  int64_t first_step_;
+};
+
+// Evaluation every `eval.freq` steps into eval.csv, and with `eval.save_best` the policy of the
+// best evaluation so far as best_model.policy (highest mean return; the latest of equals, which
+// has trained longest). Evaluates on a fresh environment with the training vector env's frozen
+// observation statistics and raw rewards (SB3's EvalCallback on a VecNormalize'd model).
+class EvaluationObserver : public Observer {
+ public:
+  EvaluationObserver(const Experiment& experiment, const std::filesystem::path& directory,
+                     Algorithm& algorithm, const envs::VecEnv& training_env, bool resuming);
+  bool on_iteration(const Progress& progress) override;
+  // Evaluates now (the final evaluation), records it and returns it.
+  EvaluationResult evaluate(int64_t timesteps);
+
+  std::optional<double> best_mean() const { return best_mean_; }
+  int64_t best_timesteps() const { return best_timesteps_; }
+
+ private:
+  // On resume: the best evaluation up to the checkpoint, from eval.csv.
+  void recall_best(int64_t up_to);
+
+  const Experiment& experiment_;
+  std::filesystem::path directory_;
+  Algorithm& algorithm_;
+  const envs::VecEnv& training_env_;
+  std::ofstream file_;
+  int64_t last_timesteps_;
+  std::optional<double> best_mean_;
+  int64_t best_timesteps_ = 0;
+};
+
+// A checkpoint every `checkpoint_freq` steps (checkpoints/step_<N>.ckpt, the replay buffer
+// beside the newest one when asked), and the pause at `stop_at`.
+class CheckpointObserver : public Observer {
+ public:
+  CheckpointObserver(const Experiment& experiment, const std::filesystem::path& directory,
+                     Algorithm& algorithm, std::optional<int64_t> stop_at,
+                     std::filesystem::path last_buffer);
+  bool on_iteration(const Progress& progress) override;
+
+ private:
+  void save(int64_t timesteps);
+
+  const Experiment& experiment_;
+  std::filesystem::path directory_;
+  Algorithm& algorithm_;
+  std::optional<int64_t> stop_at_;
+  std::filesystem::path last_buffer_;
+  int64_t last_timesteps_;
+};
+
+// The live progress line on standard error: steps, steps/s, mean return, ETA.
+class ProgressLine : public Observer {
+ public:
+  ProgressLine(int64_t total_timesteps, int64_t first_step);
+  bool on_iteration(const Progress& progress) override;
+  void finish();  // the last line, then a newline
+
+ private:
+  void print(const Progress& progress);
+
+  int64_t total_timesteps_, first_step_;
+  std::chrono::steady_clock::time_point start_, last_print_;
+  std::optional<Progress> last_;
+};
+
+// Paths inside a run directory.
+std::filesystem::path checkpoint_path(const std::filesystem::path& run, int64_t steps);
+std::filesystem::path buffer_path(const std::filesystem::path& checkpoint);
+
+}  // namespace tendril::rl
