@@ -1,0 +1,23 @@
+#pragma once
+
+#include <Eigen/Core>
+
+namespace tendril::adapt {
+
+// The jitter ladder for kernel matrices that do not factor: 1e-10·σ_f² added to the diagonal,
+// ×10 per failed attempt, up to 1e-4·σ_f².
+constexpr double kFirstJitter = 1e-10;
+constexpr double kLastJitter = 1e-4;
+
+// Factors `kernel_matrix` + (noise_variance + jitter) I into the lower triangle of `factor`
+// (same size), climbing the jitter ladder (relative to `signal_variance`) from zero until the
+// Cholesky factorisation succeeds. Returns false when even the last rung fails; `jitter` holds
+// the jitter used.
+bool factor_with_jitter(const Eigen::MatrixXd& kernel_matrix, double noise_variance,
+                        double signal_variance, Eigen::Ref<Eigen::MatrixXd> factor, double& jitter);
+
+// Overwrites the lower triangle of `factor` (L) with L' such that L' L'ᵀ = L Lᵀ + v vᵀ, in O(n²)
+// (Golub & Van Loan, "Matrix Computations", 4th ed., §6.5.4). `v` is consumed.
+void cholesky_rank_one_update(Eigen::Ref<Eigen::MatrixXd> factor, Eigen::VectorXd& v);
+
+}  // namespace tendril::adapt

@@ -1,0 +1,113 @@
+#include "tendril/adapt/kernel.hpp"
+
+#include <cmath>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::adapt {
+
+namespace {
+const double kSqrt5 = std::sqrt(5.0);
+}  // namespace
+
+KernelType kernel_type_from_name(std::string_view name, std::string_view where) {
+  if (name == "squared_exponential") return KernelType::squared_exponential;
+  if (name == "matern52") return KernelType::matern52;
+  throw Error(
+      "unknown kernel '" + std::string(name) + "' (expected squared_exponential or matern52)",
+      std::string(where));
+}
+
+std::string kernel_type_name(KernelType type) {
+  return type == KernelType::squared_exponential ? "squared_exponential" : "matern52";
+}
+
+ArdKernel::ArdKernel(KernelType type, Eigen::VectorXd length_scales, double signal_variance)
+    : type_(type), length_scales_(std::move(length_scales)), signal_variance_(signal_variance) {
+  require(length_scales_.size() > 0, "a kernel needs at least one input dimension", "ArdKernel");
+  for (Eigen::Index j = 0; j < length_scales_.size(); ++j) {
+    if (!(length_scales_[j] > 0.0) || !std::isfinite(length_scales_[j])) {
+      throw Error("length scale " + std::to_string(j) + " is " + std::to_string(length_scales_[j]) +
+                      " (must be positive and finite)",
+                  "ArdKernel");
+    }
+  }
+  if (!(signal_variance_ > 0.0) || !std::isfinite(signal_variance_)) {
+    throw Error(
+        "signal variance is " + std::to_string(signal_variance_) + " (must be positive and finite)",
+        "ArdKernel");
+  }
+}
+
+double ArdKernel::shape(KernelType type, double r) {
+  if (type == KernelType::squared_exponential) return std::exp(-0.5 * r * r);
+  return (1.0 + kSqrt5 * r + (5.0 / 3.0) * r * r) * std::exp(-kSqrt5 * r);
+}
+
+double ArdKernel::slope(KernelType type, double r) {
+  if (type == KernelType::squared_exponential) return std::exp(-0.5 * r * r);
+  return (5.0 / 3.0) * (1.0 + kSqrt5 * r) * std::exp(-kSqrt5 * r);
+}
+
+void ArdKernel::squared_distances(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& b,
+                                  Eigen::MatrixXd& out) const {
+  out.setZero(a.rows(), b.rows());
+  Eigen::ArrayXd scaled_a(a.rows());
+  for (int j = 0; j < input_dim(); ++j) {
+    const double inverse_length = 1.0 / length_scales_[j];
+    scaled_a = a.col(j).array() * inverse_length;
+    for (Eigen::Index c = 0; c < b.rows(); ++c) {
+      out.col(c).array() += (scaled_a - b(c, j) * inverse_length).square();
+    }
+  }
+}
+
+void ArdKernel::apply_shape(Eigen::MatrixXd& squared_distances) const {
+  auto v = squared_distances.array();
+  if (type_ == KernelType::squared_exponential) {
+    v = signal_variance_ * (-0.5 * v).exp();
+  } else {
+    const Eigen::ArrayXXd r = v.sqrt();
+    v = signal_variance_ * (1.0 + kSqrt5 * r + (5.0 / 3.0) * v) * (-kSqrt5 * r).exp();
+  }
+}
+
+void ArdKernel::apply_slope(Eigen::MatrixXd& squared_distances) const {
+  auto v = squared_distances.array();
+  if (type_ == KernelType::squared_exponential) {
+    v = signal_variance_ * (-0.5 * v).exp();
+  } else {
+    const Eigen::ArrayXXd r = v.sqrt();
+    v = signal_variance_ * (5.0 / 3.0) * (1.0 + kSqrt5 * r) * (-kSqrt5 * r).exp();
+  }
+}
+
+void ArdKernel::covariance(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                           const Eigen::Ref<const Eigen::MatrixXd>& b, Eigen::MatrixXd& out) const {
+  squared_distances(a, b, out);
+  apply_shape(out);
+}
+
+void ArdKernel::covariance(const Eigen::Ref<const Eigen::MatrixXd>& points,
+                           const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::VectorXd& out) const {
+  Eigen::MatrixXd column;
+  covariance(points, x.transpose(), column);
+  out = column.col(0);
+}
+
+void ArdKernel::input_gradient(const Eigen::Ref<const Eigen::MatrixXd>& points,
+                               const Eigen::Ref<const Eigen::VectorXd>& x,
+                               Eigen::MatrixXd& out) const {
+  Eigen::MatrixXd r2;
+  squared_distances(points, x.transpose(), r2);
+  out.resize(input_dim(), points.rows());
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const double g = signal_variance_ * slope(type_, std::sqrt(r2(i, 0)));
+    out.col(i) =
+        -g *
+        (x - points.row(i).transpose()).cwiseQuotient(length_scales_.cwiseProduct(length_scales_));
+  }
+}
+
+}  // namespace tendril::adapt
