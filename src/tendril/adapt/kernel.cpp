@@ -1,5 +1,6 @@
 #include "tendril/adapt/kernel.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tendril/core/error.hpp"
@@ -8,6 +9,14 @@ namespace tendril::adapt {
 
 namespace {
 const double kSqrt5 = std::sqrt(5.0);
+// Shape values below this are set to zero (see ArdKernel::shape). Distances are capped before
+// the exponential so that it never produces a subnormal number either: exp(−500) and exp(−670)
+// are normal, and far below the cut.
+constexpr double kNegligible = 1e-100;
+constexpr double kMaxSquaredDistance = 1000.0;  // squared exponential: r²/2 ≤ 500
+constexpr double kMaxDistance = 300.0;          // Matérn 5/2: √5 r ≤ 671
+
+double cut(double value) { return value < kNegligible ? 0.0 : value; }
 }  // namespace
 
 KernelType kernel_type_from_name(std::string_view name, std::string_view where) {
@@ -40,13 +49,19 @@ ArdKernel::ArdKernel(KernelType type, Eigen::VectorXd length_scales, double sign
 }
 
 double ArdKernel::shape(KernelType type, double r) {
-  if (type == KernelType::squared_exponential) return std::exp(-0.5 * r * r);
-  return (1.0 + kSqrt5 * r + (5.0 / 3.0) * r * r) * std::exp(-kSqrt5 * r);
+  if (type == KernelType::squared_exponential) {
+    return cut(std::exp(-0.5 * std::min(r * r, kMaxSquaredDistance)));
+  }
+  r = std::min(r, kMaxDistance);
+  return cut((1.0 + kSqrt5 * r + (5.0 / 3.0) * r * r) * std::exp(-kSqrt5 * r));
 }
 
 double ArdKernel::slope(KernelType type, double r) {
-  if (type == KernelType::squared_exponential) return std::exp(-0.5 * r * r);
-  return (5.0 / 3.0) * (1.0 + kSqrt5 * r) * std::exp(-kSqrt5 * r);
+  if (type == KernelType::squared_exponential) {
+    return cut(std::exp(-0.5 * std::min(r * r, kMaxSquaredDistance)));
+  }
+  r = std::min(r, kMaxDistance);
+  return cut((5.0 / 3.0) * (1.0 + kSqrt5 * r) * std::exp(-kSqrt5 * r));
 }
 
 void ArdKernel::squared_distances(const Eigen::Ref<const Eigen::MatrixXd>& a,
@@ -66,21 +81,23 @@ void ArdKernel::squared_distances(const Eigen::Ref<const Eigen::MatrixXd>& a,
 void ArdKernel::apply_shape(Eigen::MatrixXd& squared_distances) const {
   auto v = squared_distances.array();
   if (type_ == KernelType::squared_exponential) {
-    v = signal_variance_ * (-0.5 * v).exp();
+    v = (-0.5 * v.min(kMaxSquaredDistance)).exp();
   } else {
-    const Eigen::ArrayXXd r = v.sqrt();
-    v = signal_variance_ * (1.0 + kSqrt5 * r + (5.0 / 3.0) * v) * (-kSqrt5 * r).exp();
+    const Eigen::ArrayXXd r = v.sqrt().min(kMaxDistance);
+    v = (1.0 + kSqrt5 * r + (5.0 / 3.0) * r.square()) * (-kSqrt5 * r).exp();
   }
+  v = (v < kNegligible).select(0.0, signal_variance_ * v);
 }
 
 void ArdKernel::apply_slope(Eigen::MatrixXd& squared_distances) const {
   auto v = squared_distances.array();
   if (type_ == KernelType::squared_exponential) {
-    v = signal_variance_ * (-0.5 * v).exp();
+    v = (-0.5 * v.min(kMaxSquaredDistance)).exp();
   } else {
-    const Eigen::ArrayXXd r = v.sqrt();
-    v = signal_variance_ * (5.0 / 3.0) * (1.0 + kSqrt5 * r) * (-kSqrt5 * r).exp();
+    const Eigen::ArrayXXd r = v.sqrt().min(kMaxDistance);
+    v = (5.0 / 3.0) * (1.0 + kSqrt5 * r) * (-kSqrt5 * r).exp();
   }
+  v = (v < kNegligible).select(0.0, signal_variance_ * v);
 }
 
 void ArdKernel::covariance(const Eigen::Ref<const Eigen::MatrixXd>& a,

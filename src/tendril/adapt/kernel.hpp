@@ -30,12 +30,15 @@ class ArdKernel {
   const Eigen::VectorXd& length_scales() const { return length_scales_; }
   double signal_variance() const { return signal_variance_; }
 
-  // k(r) / σ_f².
+  // k(r) / σ_f². Values below 1e-100 are returned as zero: next to σ_f² they are invisible in
+  // double precision, and letting them decay into subnormal numbers would slow every product
+  // that meets them a hundredfold (far points at short length scales, common early in a
+  // hyper-parameter search).
   static double shape(KernelType type, double r);
   // The factor g(r) with ∂k/∂log ℓ_j = σ_f² g(r) Δ_j²/ℓ_j² and ∂k/∂x_j = −σ_f² g(r) Δ_j/ℓ_j²
   // (Δ = x − x'): exp(−r²/2) for the squared exponential, (5/3)(1 + √5 r) exp(−√5 r) for
   // Matérn 5/2. It stays finite at r = 0, where Matérn's dk/dr alone would need r in a
-  // denominator.
+  // denominator. Cut at 1e-100 like `shape`.
   static double slope(KernelType type, double r);
 
   // Squared scaled distances r² between the rows of `a` and `b` (a.rows() × b.rows()),
