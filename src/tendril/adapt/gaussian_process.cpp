@@ -3,23 +3,15 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "tendril/adapt/cholesky.hpp"
+#include "tendril/adapt/number_text.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::adapt {
 
-namespace {
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 GaussianProcess::GaussianProcess(int input_dim, GpOptions options)
     : GaussianProcess(input_dim, options,
@@ -82,7 +74,7 @@ void GaussianProcess::fit(const Eigen::Ref<const Eigen::MatrixXd>& inputs,
       throw Error("input " + std::to_string(i) + " is not finite", where);
     }
     if (!std::isfinite(targets[i])) {
-      throw Error("target " + std::to_string(i) + " is " + number(targets[i]), where);
+      throw Error("target " + std::to_string(i) + " is " + number_text(targets[i]), where);
     }
   }
   const auto total = static_cast<int>(inputs.rows());
@@ -96,7 +88,8 @@ void GaussianProcess::fit(const Eigen::Ref<const Eigen::MatrixXd>& inputs,
 
 void GaussianProcess::add(const Eigen::Ref<const Eigen::VectorXd>& input, double target) {
   check_input(input, "GaussianProcess::add");
-  if (!std::isfinite(target)) throw Error("target is " + number(target), "GaussianProcess::add");
+  if (!std::isfinite(target))
+    throw Error("target is " + number_text(target), "GaussianProcess::add");
   if (options_.window > 0 && size_ == options_.window) remove_oldest();
   reserve(size_ + 1);
   const int n = size_;
@@ -156,7 +149,7 @@ void GaussianProcess::set_hyperparameters(const GpHyperparameters& hyperparamete
                 where);
   }
   if (!(hyperparameters.noise_variance >= 0.0) || !std::isfinite(hyperparameters.noise_variance)) {
-    throw Error("noise variance is " + number(hyperparameters.noise_variance) +
+    throw Error("noise variance is " + number_text(hyperparameters.noise_variance) +
                     " (must be non-negative and finite)",
                 where);
   }
@@ -180,9 +173,9 @@ void GaussianProcess::refactor() {
                           jitter)) {
     throw Error("the kernel matrix of " + std::to_string(size_) +
                     " points is not positive definite even with jitter " +
-                    number(kLastJitter * hyperparameters_.signal_variance) +
+                    number_text(kLastJitter * hyperparameters_.signal_variance) +
                     " (duplicate inputs with a noise variance of " +
-                    number(hyperparameters_.noise_variance) + "?)",
+                    number_text(hyperparameters_.noise_variance) + "?)",
                 "GaussianProcess");
   }
   jitter_ = jitter;

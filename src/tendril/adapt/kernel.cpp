@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tendril/adapt/number_text.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::adapt {
@@ -36,14 +37,14 @@ ArdKernel::ArdKernel(KernelType type, Eigen::VectorXd length_scales, double sign
   require(length_scales_.size() > 0, "a kernel needs at least one input dimension", "ArdKernel");
   for (Eigen::Index j = 0; j < length_scales_.size(); ++j) {
     if (!(length_scales_[j] > 0.0) || !std::isfinite(length_scales_[j])) {
-      throw Error("length scale " + std::to_string(j) + " is " + std::to_string(length_scales_[j]) +
+      throw Error("length scale " + std::to_string(j) + " is " + number_text(length_scales_[j]) +
                       " (must be positive and finite)",
                   "ArdKernel");
     }
   }
   if (!(signal_variance_ > 0.0) || !std::isfinite(signal_variance_)) {
     throw Error(
-        "signal variance is " + std::to_string(signal_variance_) + " (must be positive and finite)",
+        "signal variance is " + number_text(signal_variance_) + " (must be positive and finite)",
         "ArdKernel");
   }
 }
