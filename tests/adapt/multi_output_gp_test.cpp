@@ -66,6 +66,34 @@ TEST(MultiOutputGp, OutputsFitTheirOwnHyperparametersReproducibly) {
   }
 }
 
+TEST(MultiOutputGp, SharedHyperparametersScaleWithEachOutput) {
+  Rng data_rng(4);
+  Eigen::MatrixXd x, y;
+  make_data(60, data_rng, x, y);
+  y.col(1) = (100.0 * y.col(0).array() + 5.0).matrix();  // the same function in other units
+  MultiOutputGp gp(2, 2, {}, HyperparameterSharing::shared),
+      again(2, 2, {}, HyperparameterSharing::shared);
+  gp.fit(x, y);
+  again.fit(x, y);
+  const double before =
+      gp.output(0).log_marginal_likelihood() + gp.output(1).log_marginal_likelihood();
+  Rng rng(5), rng_again(5);
+  const double after = gp.optimize_hyperparameters(rng);
+  EXPECT_GT(after, before);
+  EXPECT_DOUBLE_EQ(after, again.optimize_hyperparameters(rng_again));
+  const auto& h0 = gp.output(0).hyperparameters();
+  const auto& h1 = gp.output(1).hyperparameters();
+  EXPECT_EQ(h0.length_scales, h1.length_scales);
+  EXPECT_NEAR(h1.signal_variance, 1e4 * h0.signal_variance, 1e-9 * h1.signal_variance);
+  EXPECT_NEAR(h1.noise_variance, 1e4 * h0.noise_variance, 1e-9 * h1.noise_variance);
+  EXPECT_GT(h0.length_scales[1], 10.0 * h0.length_scales[0]);  // input 1 is irrelevant
+  // The predictions of the second output are those of the first, in its units.
+  Eigen::MatrixXd queries = Eigen::MatrixXd::Random(4, 2), mean, variance;
+  gp.predict(queries, mean, variance);
+  EXPECT_LT((mean.col(1) - (100.0 * mean.col(0).array() + 5.0).matrix()).cwiseAbs().maxCoeff(),
+            1e-8);
+}
+
 TEST(MultiOutputGp, WindowKeepsTheLatestPointsOfEveryOutput) {
   Rng rng(3);
   Eigen::MatrixXd x, y;

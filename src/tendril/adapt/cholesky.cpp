@@ -1,6 +1,7 @@
 #include "tendril/adapt/cholesky.hpp"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 
 namespace tendril::adapt {
@@ -36,6 +37,28 @@ void cholesky_rank_one_update(Eigen::Ref<Eigen::MatrixXd> factor, Eigen::VectorX
     auto tail = v.tail(rest);
     column = (column + s * tail) / c;
     tail = c * tail - s * column;
+  }
+}
+
+void cholesky_inverse(const Eigen::Ref<const Eigen::MatrixXd>& factor, Eigen::MatrixXd& inverse) {
+  constexpr Eigen::Index kBlock = 64;
+  const Eigen::Index n = factor.rows();
+  inverse.setZero(n, n);
+  // L⁻¹, lower triangular: columns J..J+b solve L[J:, J:] X = I[J:, J:J+b] (rows above J are 0).
+  for (Eigen::Index j = 0; j < n; j += kBlock) {
+    const Eigen::Index width = std::min(kBlock, n - j);
+    auto columns = inverse.block(j, j, n - j, width);
+    columns.topRows(width).setIdentity();
+    factor.block(j, j, n - j, n - j).triangularView<Eigen::Lower>().solveInPlace(columns);
+  }
+  // (L⁻ᵀL⁻¹)_ik = Σ_{m ≥ max(i,k)} (L⁻¹)_mi (L⁻¹)_mk: rows I..I+b, columns 0..I+b, need only rows
+  // m ≥ I of L⁻¹, which later steps have not overwritten yet.
+  Eigen::MatrixXd rows;
+  for (Eigen::Index i = 0; i < n; i += kBlock) {
+    const Eigen::Index height = std::min(kBlock, n - i);
+    rows.noalias() =
+        inverse.block(i, i, n - i, height).transpose() * inverse.block(i, 0, n - i, i + height);
+    inverse.block(i, 0, height, i + height) = rows;
   }
 }
 

@@ -20,4 +20,10 @@ bool factor_with_jitter(const Eigen::MatrixXd& kernel_matrix, double noise_varia
 // (Golub & Van Loan, "Matrix Computations", 4th ed., §6.5.4). `v` is consumed.
 void cholesky_rank_one_update(Eigen::Ref<Eigen::MatrixXd> factor, Eigen::VectorXd& v);
 
+// The lower triangle of (L Lᵀ)⁻¹ = L⁻ᵀL⁻¹ from the lower Cholesky factor L, in ≈ 2n³/3 flops
+// (half of solving L Lᵀ X = I): L⁻¹ one block of columns at a time, then L⁻ᵀL⁻¹ one block of
+// rows at a time, each a matrix product over the rows below (the blocked forms of LAPACK's
+// dtrtri and dlauum). Above the diagonal `inverse` holds no meaningful values.
+void cholesky_inverse(const Eigen::Ref<const Eigen::MatrixXd>& factor, Eigen::MatrixXd& inverse);
+
 }  // namespace tendril::adapt

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 
 #include "tendril/adapt/kernel.hpp"
+#include "tendril/adapt/likelihood.hpp"
 #include "tendril/core/rng.hpp"
 
 namespace tendril::adapt {
@@ -83,6 +84,9 @@ class GaussianProcess {
   // with its gradient ∂/∂θ_k = ½ tr((ααᵀ − K⁻¹) ∂K/∂θ_k) (R&W eq. 5.9) when `gradient` is given.
   double log_marginal_likelihood(const Eigen::VectorXd& log_parameters,
                                  Eigen::VectorXd* gradient) const;
+  // The same with caller-owned scratch matrices (a search reuses them).
+  double log_marginal_likelihood(const Eigen::VectorXd& log_parameters, Eigen::VectorXd* gradient,
+                                 LikelihoodWorkspace& workspace) const;
   static Eigen::VectorXd to_log_parameters(const GpHyperparameters& hyperparameters);
   static GpHyperparameters from_log_parameters(const Eigen::VectorXd& log_parameters);
 

@@ -101,6 +101,24 @@ void ArdKernel::apply_slope(Eigen::MatrixXd& squared_distances) const {
   v = (v < kNegligible).select(0.0, signal_variance_ * v);
 }
 
+void ArdKernel::apply_shape_and_slope(Eigen::MatrixXd& squared_distances,
+                                      Eigen::MatrixXd& shape) const {
+  auto v = squared_distances.array();
+  if (type_ == KernelType::squared_exponential) {
+    // g(r) = k(r)/σ_f²: the slope is the shape.
+    shape = squared_distances;
+    apply_shape(shape);
+    squared_distances = shape;
+    return;
+  }
+  const Eigen::ArrayXXd r = v.sqrt().min(kMaxDistance);
+  const Eigen::ArrayXXd decay = (-kSqrt5 * r).exp();
+  shape = (1.0 + kSqrt5 * r + (5.0 / 3.0) * r.square()) * decay;
+  v = (5.0 / 3.0) * (1.0 + kSqrt5 * r) * decay;
+  shape = (shape.array() < kNegligible).select(0.0, signal_variance_ * shape.array());
+  v = (v < kNegligible).select(0.0, signal_variance_ * v);
+}
+
 void ArdKernel::covariance(const Eigen::Ref<const Eigen::MatrixXd>& a,
                            const Eigen::Ref<const Eigen::MatrixXd>& b, Eigen::MatrixXd& out) const {
   squared_distances(a, b, out);

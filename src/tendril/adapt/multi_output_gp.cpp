@@ -3,12 +3,16 @@
 #include <cmath>
 #include <string>
 
+#include "tendril/adapt/hyperparameter_search.hpp"
+#include "tendril/adapt/likelihood.hpp"
 #include "tendril/adapt/number_text.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::adapt {
 
-MultiOutputGp::MultiOutputGp(int input_dim, int output_dim, GpOptions options) {
+MultiOutputGp::MultiOutputGp(int input_dim, int output_dim, GpOptions options,
+                             HyperparameterSharing sharing)
+    : sharing_(sharing) {
   require(output_dim > 0, "output_dim must be positive", "MultiOutputGp");
   outputs_.reserve(output_dim);
   for (int k = 0; k < output_dim; ++k) outputs_.emplace_back(input_dim, options);
@@ -63,11 +67,46 @@ void MultiOutputGp::clear() {
 }
 
 double MultiOutputGp::optimize_hyperparameters(Rng& rng) {
+  if (sharing_ == HyperparameterSharing::shared) return optimize_shared_hyperparameters(rng);
   const uint64_t seed = rng.next_u64();
   double total = 0.0;
   for (int k = 0; k < output_dim(); ++k) {
     Rng stream(seed, k);
     total += outputs_[k].optimize_hyperparameters(stream);
+  }
+  return total;
+}
+
+double MultiOutputGp::optimize_shared_hyperparameters(Rng& rng) {
+  const int n = size();
+  require(n > 0, "no data to fit hyper-parameters to", "MultiOutputGp::optimize_hyperparameters");
+  const int d = input_dim();
+  const GpOptions& options = outputs_.front().options();
+  // Standardised residuals: output k's r_k / s_k, with s_k² its target variance. In these units
+  // the variances are the relative ones, and the bounds apply as they stand.
+  Eigen::MatrixXd residuals(n, output_dim());
+  Eigen::VectorXd scales(output_dim());
+  for (int k = 0; k < output_dim(); ++k) {
+    const auto& output = outputs_[k];
+    scales[k] = target_scale(output.targets());
+    residuals.col(k) = (output.targets().array() - output.prior_mean()) / std::sqrt(scales[k]);
+  }
+  Eigen::VectorXd lower, upper;
+  log_parameter_bounds(options, d, 1.0, lower, upper);
+  Eigen::VectorXd start = GaussianProcess::to_log_parameters(outputs_.front().hyperparameters());
+  start.tail(2).array() -= std::log(scales[0]);
+  LikelihoodWorkspace workspace;
+  const auto inputs = outputs_.front().inputs();
+  const SmoothObjective objective = [&](const Eigen::VectorXd& theta, Eigen::VectorXd& gradient) {
+    return log_marginal_likelihood(options.kernel, inputs, residuals, theta, &gradient, workspace);
+  };
+  const Eigen::VectorXd best = search_log_parameters(objective, lower, upper, start, options, rng);
+  double total = 0.0;
+  for (int k = 0; k < output_dim(); ++k) {
+    Eigen::VectorXd theta = best;
+    theta.tail(2).array() += std::log(scales[k]);
+    outputs_[k].set_hyperparameters(GaussianProcess::from_log_parameters(theta));
+    total += outputs_[k].log_marginal_likelihood();
   }
   return total;
 }
