@@ -30,14 +30,13 @@ TEST(Cholesky, InverseFromFactorMatchesTheInverse) {
   }
 }
 
-TEST(Cholesky, RankOneUpdateFactorsTheUpdatedMatrix) {
-  const Eigen::MatrixXd k = random_spd(30, 1);
-  Eigen::MatrixXd factor = k.llt().matrixL();
-  Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(30, -2.0, 3.0);
-  const Eigen::MatrixXd updated = k + v * v.transpose();
-  cholesky_rank_one_update(factor, v);
-  const Eigen::MatrixXd lower = factor.triangularView<Eigen::Lower>();
-  const Eigen::MatrixXd expected = updated.llt().matrixL();
+TEST(Cholesky, RemovingTheFirstRowAndColumnFactorsTheTrailingBlock) {
+  const Eigen::MatrixXd k = random_spd(40, 2);
+  Eigen::MatrixXd factor = Eigen::MatrixXd::Constant(50, 50, 7.0);  // larger storage, as a GP keeps
+  factor.topLeftCorner(40, 40) = k.llt().matrixL();
+  cholesky_remove_first(factor, 40);
+  const Eigen::MatrixXd lower = factor.topLeftCorner(39, 39).triangularView<Eigen::Lower>();
+  const Eigen::MatrixXd expected = k.bottomRightCorner(39, 39).llt().matrixL();
   EXPECT_LT((lower - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
 }
 

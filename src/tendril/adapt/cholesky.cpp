@@ -23,20 +23,26 @@ bool factor_with_jitter(const Eigen::MatrixXd& kernel_matrix, double noise_varia
   return false;
 }
 
-void cholesky_rank_one_update(Eigen::Ref<Eigen::MatrixXd> factor, Eigen::VectorXd& v) {
-  // Plane rotations that fold v into L one column at a time.
-  const Eigen::Index m = factor.rows();
+void cholesky_remove_first(Eigen::Ref<Eigen::MatrixXd> factor, Eigen::Index n) {
+  const Eigen::Index m = n - 1;
+  if (m <= 0) return;
+  Eigen::VectorXd v = factor.col(0).segment(1, m);  // l21, indexed like L22's rows
   for (Eigen::Index k = 0; k < m; ++k) {
-    const double diagonal = factor(k, k);
-    const double r = std::hypot(diagonal, v[k]);
-    const double c = r / diagonal, s = v[k] / diagonal;
-    factor(k, k) = r;
-    const Eigen::Index rest = m - k - 1;
-    if (rest == 0) break;
-    auto column = factor.col(k).tail(rest);
-    auto tail = v.tail(rest);
-    column = (column + s * tail) / c;
-    tail = c * tail - s * column;
+    // L22's column k is factor column k + 1 from row k + 1; it lands in column k from row k.
+    const double* source = &factor(k + 1, k + 1);
+    double* target = &factor(k, k);
+    double* rest = v.data() + k;
+    const double diagonal = source[0];
+    const double r = std::sqrt(diagonal * diagonal + rest[0] * rest[0]);
+    const double c = r / diagonal, s = rest[0] / diagonal, inverse_c = diagonal / r;
+    target[0] = r;
+    const Eigen::Index below = m - k;
+#pragma omp simd
+    for (Eigen::Index i = 1; i < below; ++i) {
+      const double updated = (source[i] + s * rest[i]) * inverse_c;
+      target[i] = updated;
+      rest[i] = c * rest[i] - s * updated;
+    }
   }
 }
 

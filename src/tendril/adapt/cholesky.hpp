@@ -16,9 +16,12 @@ constexpr double kLastJitter = 1e-4;
 bool factor_with_jitter(const Eigen::MatrixXd& kernel_matrix, double noise_variance,
                         double signal_variance, Eigen::Ref<Eigen::MatrixXd> factor, double& jitter);
 
-// Overwrites the lower triangle of `factor` (L) with L' such that L' L'ᵀ = L Lᵀ + v vᵀ, in O(n²)
-// (Golub & Van Loan, "Matrix Computations", 4th ed., §6.5.4). `v` is consumed.
-void cholesky_rank_one_update(Eigen::Ref<Eigen::MatrixXd> factor, Eigen::VectorXd& v);
+// Given in the leading n × n lower triangle of `factor` the Cholesky factor L of K, writes to its
+// leading (n − 1) × (n − 1) lower triangle the factor of K without its first row and column, in
+// O(n²): with L = [l11 0; l21 L22], that matrix is L22 L22ᵀ + l21 l21ᵀ, a rank-one update of L22 by
+// plane rotations (Golub & Van Loan, "Matrix Computations", 4th ed., §6.5.4), done while moving
+// each column up and left by one (one pass over the memory).
+void cholesky_remove_first(Eigen::Ref<Eigen::MatrixXd> factor, Eigen::Index n);
 
 // The lower triangle of (L Lᵀ)⁻¹ = L⁻ᵀL⁻¹ from the lower Cholesky factor L, in ≈ 2n³/3 flops
 // (half of solving L Lᵀ X = I): L⁻¹ one block of columns at a time, then L⁻ᵀL⁻¹ one block of

@@ -90,7 +90,7 @@ void GaussianProcess::add(const Eigen::Ref<const Eigen::VectorXd>& input, double
   check_input(input, "GaussianProcess::add");
   if (!std::isfinite(target))
     throw Error("target is " + number_text(target), "GaussianProcess::add");
-  if (options_.window > 0 && size_ == options_.window) remove_oldest();
+  if (options_.window > 0 && size_ == options_.window) drop_oldest();
   reserve(size_ + 1);
   const int n = size_;
   inputs_.row(n) = input.transpose();
@@ -118,21 +118,20 @@ void GaussianProcess::add(const Eigen::Ref<const Eigen::VectorXd>& input, double
 
 void GaussianProcess::remove_oldest() {
   require(size_ > 0, "no point to remove", "GaussianProcess::remove_oldest");
+  drop_oldest();
+  update_weights();
+}
+
+void GaussianProcess::drop_oldest() {
   const int m = size_ - 1;
   if (m > 0) {
-    // [l11 0; l21 L22]: the points after the first have K22 = L22 L22ᵀ + l21 l21ᵀ.
-    Eigen::VectorXd first_column = factor_.col(0).segment(1, m);
-    cholesky_rank_one_update(factor_.block(1, 1, m, m), first_column);
-    for (int j = 0; j < m; ++j) {
-      factor_.col(j).segment(j, m - j) = factor_.col(j + 1).segment(j + 1, m - j);
-    }
+    cholesky_remove_first(factor_, size_);
     for (int i = 0; i < m; ++i) {
       inputs_.row(i) = inputs_.row(i + 1);
       targets_[i] = targets_[i + 1];
     }
   }
   size_ = m;
-  update_weights();
 }
 
 void GaussianProcess::clear() {

@@ -105,6 +105,8 @@ class GaussianProcess {
  private:
   void check_input(const Eigen::Ref<const Eigen::VectorXd>& input, const char* where) const;
   void reserve(int points);
+  // remove_oldest without the weights' update (add updates them once, after both changes).
+  void drop_oldest();
   // Factors the data held from scratch, raising the jitter as needed.
   void refactor();
   // Prior mean and α from the factor and the targets, O(n²).
