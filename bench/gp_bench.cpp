@@ -356,6 +356,7 @@ int main(int argc, char** argv) {
     const Data& data = datasets[{n, 9}];
     const auto hyper = fixed_hyperparameters(9, data.target_variance());
     GaussianProcess before(9, {}, hyper);
+    before.reserve(n);  // the addition itself, not a reallocation of the storage
     before.fit(data.inputs.topRows(n - 1), data.targets.col(0).head(n - 1));
     const Eigen::VectorXd last = data.inputs.row(n - 1).transpose();
     const double target = data.targets(n - 1, 0);

@@ -19,6 +19,7 @@ targets' variance.
 import os
 import sys
 import time
+import warnings
 
 import numpy as np
 from sklearn.gaussian_process import GaussianProcessRegressor
@@ -58,6 +59,7 @@ def median_seconds(action, min_repeats=3, min_total=0.3):
 
 
 def main():
+    warnings.filterwarnings("ignore")  # bound warnings: the same bounds bind tendril's search
     directory = sys.argv[1]
     with open(os.path.join(directory, "jobs.txt")) as jobs:
         for line in jobs:

@@ -135,6 +135,19 @@ TEST(GaussianProcessFit, UnfactorableKernelIsAnError) {
   x << 0.5, 0.5;
   const std::string message = error_message([&] { gp.fit(x, Eigen::Vector2d(1.0, 1.0)); });
   EXPECT_TRUE(contains(message, "not positive definite even with jitter")) << message;
+  EXPECT_EQ(gp.size(), 0);
+  // Hyper-parameters that cannot factor the data held leave the previous ones in force.
+  GaussianProcess held(1, {}, {Eigen::VectorXd::Ones(1), 1.0, 0.0});
+  held.fit(x, Eigen::Vector2d(1.0, 1.0));
+  EXPECT_TRUE(contains(error_message([&] {
+                         held.set_hyperparameters({Eigen::VectorXd::Ones(1), 1e-320, 0.0});
+                       }),
+                       "not positive definite"));
+  EXPECT_EQ(held.hyperparameters().signal_variance, 1.0);
+  EXPECT_EQ(held.size(), 2);
+  Eigen::VectorXd mean, variance;
+  held.predict(x, mean, variance);
+  EXPECT_NEAR(mean[0], 1.0, 1e-6);
 }
 
 TEST(GaussianProcessFit, BadInputIsAnErrorNamingIt) {

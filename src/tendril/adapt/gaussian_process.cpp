@@ -11,8 +11,6 @@
 
 namespace tendril::adapt {
 
-namespace {}  // namespace
-
 GaussianProcess::GaussianProcess(int input_dim, GpOptions options)
     : GaussianProcess(input_dim, options,
                       GpHyperparameters{Eigen::VectorXd::Ones(std::max(input_dim, 1)), 1.0, 1e-2}) {
@@ -49,7 +47,8 @@ void GaussianProcess::check_input(const Eigen::Ref<const Eigen::VectorXd>& input
 void GaussianProcess::reserve(int points) {
   const auto capacity = static_cast<int>(inputs_.rows());
   if (capacity >= points) return;
-  int grown = std::max({points, 2 * capacity, 16});
+  // Growth by half again: the factor is capacity² doubles, so doubling would quadruple memory.
+  int grown = std::max({points, capacity + capacity / 2, 16});
   if (options_.window > 0) grown = std::min(grown, std::max(points, options_.window));
   inputs_.conservativeResize(grown, input_dim_);
   targets_.conservativeResize(grown);
@@ -83,13 +82,19 @@ void GaussianProcess::fit(const Eigen::Ref<const Eigen::MatrixXd>& inputs,
   reserve(size_);
   inputs_.topRows(size_) = inputs.bottomRows(size_);
   targets_.head(size_) = targets.tail(size_);
-  refactor();
+  try {
+    refactor();
+  } catch (const Error&) {
+    clear();
+    throw;
+  }
 }
 
 void GaussianProcess::add(const Eigen::Ref<const Eigen::VectorXd>& input, double target) {
   check_input(input, "GaussianProcess::add");
-  if (!std::isfinite(target))
+  if (!std::isfinite(target)) {
     throw Error("target is " + number_text(target), "GaussianProcess::add");
+  }
   if (options_.window > 0 && size_ == options_.window) drop_oldest();
   reserve(size_ + 1);
   const int n = size_;
@@ -152,10 +157,19 @@ void GaussianProcess::set_hyperparameters(const GpHyperparameters& hyperparamete
                     " (must be non-negative and finite)",
                 where);
   }
+  const ArdKernel previous_kernel = kernel_;
+  const GpHyperparameters previous = hyperparameters_;
   kernel_ =
       ArdKernel(options_.kernel, hyperparameters.length_scales, hyperparameters.signal_variance);
   hyperparameters_ = hyperparameters;
-  refactor();
+  try {
+    refactor();
+  } catch (const Error&) {
+    kernel_ = previous_kernel;  // the data keep the hyper-parameters they factored with
+    hyperparameters_ = previous;
+    refactor();
+    throw;
+  }
 }
 
 void GaussianProcess::refactor() {

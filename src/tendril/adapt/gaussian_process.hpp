@@ -56,15 +56,21 @@ class GaussianProcess {
   explicit GaussianProcess(int input_dim, GpOptions options = {});
   GaussianProcess(int input_dim, GpOptions options, GpHyperparameters hyperparameters);
 
-  // Replaces the data (keeping the last `window` rows when a window is set) and factors.
+  // Replaces the data (keeping the last `window` rows when a window is set) and factors. Bad
+  // data raise Error and leave the GP as it was; a kernel matrix that does not factor even with
+  // jitter raises Error and leaves it empty.
   void fit(const Eigen::Ref<const Eigen::MatrixXd>& inputs,
            const Eigen::Ref<const Eigen::VectorXd>& targets);
   // Appends one point, dropping the oldest first when the window is full.
   void add(const Eigen::Ref<const Eigen::VectorXd>& input, double target);
   void remove_oldest();
   void clear();
+  // Storage for `points` points, so that additions up to that number never reallocate (the
+  // factor alone takes 8·points² bytes).
+  void reserve(int points);
 
-  // Sets the hyper-parameters and refactors the data held.
+  // Sets the hyper-parameters and refactors the data held; if that fails (Error), the previous
+  // hyper-parameters stay.
   void set_hyperparameters(const GpHyperparameters& hyperparameters);
   // Maximises the log marginal likelihood of the data held over the hyper-parameters (see
   // GpOptions), keeps the best and refactors. Returns its log marginal likelihood.
@@ -104,7 +110,6 @@ class GaussianProcess {
 
  private:
   void check_input(const Eigen::Ref<const Eigen::VectorXd>& input, const char* where) const;
-  void reserve(int points);
   // remove_oldest without the weights' update (add updates them once, after both changes).
   void drop_oldest();
   // Factors the data held from scratch, raising the jitter as needed.
