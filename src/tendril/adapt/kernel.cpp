@@ -90,17 +90,6 @@ void ArdKernel::apply_shape(Eigen::MatrixXd& squared_distances) const {
   v = (v < kNegligible).select(0.0, signal_variance_ * v);
 }
 
-void ArdKernel::apply_slope(Eigen::MatrixXd& squared_distances) const {
-  auto v = squared_distances.array();
-  if (type_ == KernelType::squared_exponential) {
-    v = (-0.5 * v.min(kMaxSquaredDistance)).exp();
-  } else {
-    const Eigen::ArrayXXd r = v.sqrt().min(kMaxDistance);
-    v = (5.0 / 3.0) * (1.0 + kSqrt5 * r) * (-kSqrt5 * r).exp();
-  }
-  v = (v < kNegligible).select(0.0, signal_variance_ * v);
-}
-
 void ArdKernel::apply_shape_and_slope(Eigen::MatrixXd& squared_distances,
                                       Eigen::MatrixXd& shape) const {
   auto v = squared_distances.array();

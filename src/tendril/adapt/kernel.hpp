@@ -47,10 +47,10 @@ class ArdKernel {
   void squared_distances(const Eigen::Ref<const Eigen::MatrixXd>& a,
                          const Eigen::Ref<const Eigen::MatrixXd>& b, Eigen::MatrixXd& out) const;
 
-  // σ_f² k(r)/σ_f² and σ_f² g(r), elementwise, from squared scaled distances r² (in place).
+  // σ_f² k(r)/σ_f², elementwise, from squared scaled distances r² (in place).
   void apply_shape(Eigen::MatrixXd& squared_distances) const;
-  void apply_slope(Eigen::MatrixXd& squared_distances) const;
-  // Both from one exponential: `shape` receives σ_f² k/σ_f², `squared_distances` becomes σ_f² g.
+  // The shape and σ_f² g(r) from one exponential: `shape` receives σ_f² k/σ_f²,
+  // `squared_distances` becomes σ_f² g.
   void apply_shape_and_slope(Eigen::MatrixXd& squared_distances, Eigen::MatrixXd& shape) const;
 
   // K(a, b) (a.rows() × b.rows()).
