@@ -46,7 +46,8 @@ struct GpOptions {
 // Points are rows (inputs: n × input_dim). Adding a point extends L by one row, O(n²); dropping
 // the oldest point (the sliding window) turns the factor of the remaining points into a rank-one
 // update of L's trailing block, also O(n²) — neither refactors. Both give the factor a refit
-// would give, to rounding.
+// would give, to rounding. (A point whose new pivot vanishes — a duplicate without noise — makes
+// the GP refactor, with jitter.) Without hyper-parameters given: ℓ = 1, σ_f² = 1, σ_n² = 0.01.
 //
 // Jitter: when K + σ_n² I does not factor, 1e-10·σ_f² is added to its diagonal and multiplied by
 // ten until it does; beyond 1e-4·σ_f² the kernel is reported as not positive definite. The jitter
