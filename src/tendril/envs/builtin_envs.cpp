@@ -9,6 +9,7 @@
 #include "tendril/envs/elastica/unstructured_obstacles.hpp"
 #include "tendril/envs/identity/identity.hpp"
 #include "tendril/envs/identity/identity_box.hpp"
+#include "tendril/envs/pneumatic/robot_env.hpp"
 
 namespace tendril::envs {
 
@@ -35,6 +36,11 @@ void register_builtin_envs(Registry& registry) {
   registry.add({"Elastica/UnstructuredObstacles-v0", &elastica::UnstructuredObstacles::create,
                 elastica::UnstructuredObstacles::kEpisodeSteps,
                 "soft arm reaches through a random nest of cylinders (case 4)"});
+  // The three-module pneumatic arm of seed 002 (SPEC M9): the robot interface with its twin
+  // behind; trials of the paper's 150 control steps (15 s).
+  registry.add({pneumatic::RobotEnv::kId, &pneumatic::RobotEnv::create,
+                pneumatic::RobotEnv::kTrialSteps,
+                "pneumatic 3-module arm twin: 9 pressures in, 3 tip positions out (robot)"});
 }
 
 }  // namespace tendril::envs
