@@ -33,7 +33,8 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "envs::make: unknown environment id 'Pendulum-v0'; registered ids: CartPole-v1, "
             "Elastica/OrientedReach-v0, Elastica/StructuredObstacles-v0, Elastica/Tracking3D-v0, "
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
-            "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/Robot-v0");
+            "MountainCarContinuous-v0, Pendulum-v1, "
+            "PneumaticArm/Robot-v0");
 }
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {
