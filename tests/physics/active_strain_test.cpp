@@ -19,12 +19,14 @@ class ConstantActiveStrain final : public RodPart {
   ConstantActiveStrain(Vectors stretch, Vectors curvature)
       : stretch_(std::move(stretch)), curvature_(std::move(curvature)) {}
   uint32_t stages() const override { return kLoads; }
+  void attach(const RodModel& model, const RodState&) override { loads_.resize(model); }
   void add_loads(const RodModel& model, RodState& state) override {
-    add_active_strain_loads(model, state, stretch_, curvature_);
+    loads_.add(model, state, stretch_, curvature_);
   }
 
  private:
   Vectors stretch_, curvature_;
+  ActiveStrainLoads loads_;
 };
 
 RodSpec soft_rod(int n) {
@@ -92,7 +94,9 @@ Resultant active_strain_resultant(const Rod& rod, const Vectors& stretch,
   compute_internal_loads(rod.model(), scratch);
   scratch.external_forces.setZero();
   scratch.external_torques.setZero();
-  add_active_strain_loads(rod.model(), scratch, stretch, curvature);
+  ActiveStrainLoads loads;
+  loads.resize(rod.model());
+  loads.add(rod.model(), scratch, stretch, curvature);
   Resultant total;
   for (int j = 0; j <= rod.n_elements(); ++j) {
     const Eigen::Vector3d f = scratch.external_forces.col(j);

@@ -21,8 +21,18 @@ namespace tendril::physics {
 // Allocation-free.
 //
 // `stretch` is 3 × n (δσ per element: shear along d1, d2, stretch along d3); `curvature` is
-// 3 × (n − 1) (δκ per Voronoi point, 1/m, about d1, d2, d3).
-void add_active_strain_loads(const RodModel& model, RodState& state, const Vectors& stretch,
-                             const Vectors& curvature);
+// 3 × (n − 1) (δκ per Voronoi point, 1/m, about d1, d2, d3). The object holds the scratch of
+// the computation, sized by `resize` for one rod.
+class ActiveStrainLoads {
+ public:
+  void resize(const RodModel& model);
+  void add(const RodModel& model, RodState& state, const Vectors& stretch,
+           const Vectors& curvature);
+
+ private:
+  Vectors lab_stresses_;  // Qᵀ δn / e per element
+  Vectors bend_;          // δτ / ε³ per Voronoi point
+  Vectors quadrature_;    // ½ (κ × δτ) D̂ / ε³ per Voronoi point
+};
 
 }  // namespace tendril::physics

@@ -49,6 +49,7 @@ void PneumaticModules::attach(const RodModel& model, const RodState&) {
   }
   stretch_ = Vectors::Zero(3, model.n_elements);
   curvature_ = Vectors::Zero(3, model.n_voronoi());
+  loads_.resize(model);
 }
 
 void PneumaticModules::vent() {
@@ -74,14 +75,21 @@ void PneumaticModules::add_loads(const RodModel& model, RodState& state) {
   }
 
   const int per_module = spec_.elements_per_module;
-  for (int i = 0; i < model.n_elements; ++i) stretch_(2, i) = module_stretch[i / per_module];
-  for (int j = 0; j < model.n_voronoi(); ++j) {
-    // Voronoi point j joins elements j and j + 1, which may belong to two modules.
-    const int a = j / per_module, b = (j + 1) / per_module;
-    curvature_(0, j) = 0.5 * (module_curvature(0, a) + module_curvature(0, b));
-    curvature_(1, j) = 0.5 * (module_curvature(1, a) + module_curvature(1, b));
+  double* stretch = stretch_.row(2).data();
+  double* curvature[2] = {curvature_.row(0).data(), curvature_.row(1).data()};
+  for (int m = 0; m < kModules; ++m) {
+    const int first = m * per_module, last = first + per_module;  // elements [first, last)
+    for (int i = first; i < last; ++i) stretch[i] = module_stretch[m];
+    // Voronoi point j joins elements j and j + 1: inside the module for j < last − 1; the one
+    // on the joint with the next module takes the mean of both modules' curvatures.
+    for (int r = 0; r < 2; ++r) {
+      for (int j = first; j < last - 1; ++j) curvature[r][j] = module_curvature(r, m);
+      if (m + 1 < kModules) {
+        curvature[r][last - 1] = 0.5 * (module_curvature(r, m) + module_curvature(r, m + 1));
+      }
+    }
   }
-  add_active_strain_loads(model, state, stretch_, curvature_);
+  loads_.add(model, state, stretch_, curvature_);
 }
 
 void PneumaticModules::save_state(SnapshotWriter& out) const {

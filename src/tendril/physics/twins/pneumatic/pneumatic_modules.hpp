@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <array>
 
+#include "tendril/physics/forcing/active_strain.hpp"
 #include "tendril/physics/rod/rod_part.hpp"
 #include "tendril/physics/twins/pneumatic/chambers.hpp"
 #include "tendril/physics/twins/pneumatic/play_hysteresis.hpp"
@@ -80,6 +81,7 @@ class PneumaticModules final : public RodPart {
   Eigen::Matrix<double, 2, kModules> bias_ = Eigen::Matrix<double, 2, kModules>::Zero();
   Eigen::Matrix<double, 2, kChambers> curvature_per_bar_;  // set at attach
   Vectors stretch_, curvature_;  // per element / per Voronoi point, reused every step
+  ActiveStrainLoads loads_;
 };
 
 }  // namespace tendril::physics::pneumatic
