@@ -63,6 +63,11 @@ TEST(RobotEnv, TheTwinIsReproducibleWithASeedAndStochasticWithout) {
   EXPECT_NE(run(*b, 4), first);
   const auto plain_a = robot("stochastic: false\n"), plain_b = robot("stochastic: false\n");
   EXPECT_EQ(run(*plain_a, 3), run(*plain_b, 4));
+  // magnitude_scale multiplies every magnitude: at 0 the effects are on but do nothing.
+  const auto scaled_to_zero = robot("magnitude_scale: 0\n");
+  EXPECT_EQ(run(*scaled_to_zero, 5), run(*plain_a, 3));
+  const auto doubled = robot("magnitude_scale: 2\n");
+  EXPECT_NE(run(*doubled, 3), first);
 }
 
 TEST(RobotEnv, BadParametersAndActionsAreNamed) {

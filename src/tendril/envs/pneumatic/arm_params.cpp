@@ -68,6 +68,18 @@ PneumaticArmSpec arm_spec_from(const Config& params) {
   effects.sensor_noise = noise.get_or<bool>("enabled", stochastic);
   effects.marker_noise = 1e-3 * non_negative(noise, "marker_sigma_mm", 1e3 * effects.marker_noise);
   spec.sensor.latency = non_negative(params, "sensor_latency_s", spec.sensor.latency);
+  // One knob for calibrating the twin's stochasticity against the paper's gap.
+  const double scale = non_negative(params, "magnitude_scale", 1.0);
+  effects.drift_step *= scale;
+  effects.drift_cap *= scale;
+  effects.hysteresis_width *= scale;
+  effects.gain_spread *= scale;
+  effects.eccentricity *= scale;
+  effects.marker_noise *= scale;
+  if (effects.gain_spread >= 1.0) {
+    throw Error("makes the chamber gain spread reach 1 or more",
+                key_where(params, "magnitude_scale"));
+  }
 
   const Config twin = params.child("twin");
   spec.elements_per_module = twin.get_or<int>("elements_per_module", spec.elements_per_module);

@@ -19,6 +19,7 @@ namespace tendril::envs::pneumatic {
 //   imbalance: {enabled, gain_spread: 0.1, eccentricity_mm: 2.0}
 //   sensor_noise: {enabled, marker_sigma_mm: 0.2}
 //   sensor_latency_s: 0.0        # whole multiples of the 10 ms sample period
+//   magnitude_scale: 1.0         # multiplies every magnitude above (the calibration knob)
 //   twin: {elements_per_module: 6, time_step_s: 5e-4, bend_deg_per_bar: 30,
 //          extension_per_bar: 0.1, inflate_time_s: 0.15, deflate_time_s: 0.4,
 //          ceiling_bar: 1.5, settle_time_s: 2.0}

@@ -10,36 +10,6 @@
 
 namespace tendril::envs::pneumatic {
 
-namespace {
-
-std::pair<double, double> range_of(const Config& config, const std::string& key,
-                                   std::pair<double, double> fallback) {
-  if (!config.has(key)) return fallback;
-  const std::vector<double> values = config.get<std::vector<double>>(key);
-  if (values.size() != 2) throw Error("needs [min, max]", key_where(config, key));
-  return {values[0], values[1]};
-}
-
-SaturatingSignalSpec signal_from(const Config& config) {
-  SaturatingSignalSpec spec;
-  spec.ceiling_min = config.get_or<double>("ceiling_min_bar", spec.ceiling_min);
-  spec.ceiling_max = config.get_or<double>("ceiling_max_bar", spec.ceiling_max);
-  std::tie(spec.ceiling_hold_min, spec.ceiling_hold_max) =
-      range_of(config, "ceiling_hold_s", {spec.ceiling_hold_min, spec.ceiling_hold_max});
-  std::tie(spec.hold_min, spec.hold_max) =
-      range_of(config, "hold_s", {spec.hold_min, spec.hold_max});
-  spec.saturation_probability =
-      config.get_or<double>("saturation_probability", spec.saturation_probability);
-  try {
-    spec.validate();
-  } catch (const Error& e) {
-    throw Error(e.what_wrong(), config.source() + ": " + config.path());
-  }
-  return spec;
-}
-
-}  // namespace
-
 PneumaticDataset record_pneumatic_dataset(Env& robot, SaturatingSignal& signal, int rows,
                                           double period, uint64_t seed) {
   require(rows >= 1, "record at least one row", "record_pneumatic_dataset");
@@ -98,7 +68,7 @@ CollectionReport collect_pneumatic_dataset(const Config& config,
   }
   const int rows = static_cast<int>(std::lround(duration / period));
   const uint64_t seed = config.get_or<uint64_t>("seed", 0);
-  const SaturatingSignalSpec signal_spec = signal_from(config.child("signal"));
+  const SaturatingSignalSpec signal_spec = saturating_signal_from(config.child("signal"));
   const std::string configured = config.get_or<std::string>("output", "");
   const std::filesystem::path file = output.empty() ? std::filesystem::path(configured) : output;
   if (file.empty()) throw Error("no output file: set `output` or pass --out", config.source());

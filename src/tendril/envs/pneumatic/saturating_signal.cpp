@@ -4,10 +4,41 @@
 #include <cmath>
 
 #include "tendril/core/error.hpp"
+#include "tendril/envs/pneumatic/arm_params.hpp"
 
 namespace tendril::envs::pneumatic {
 
 using physics::pneumatic::kChambers;
+
+namespace {
+
+std::pair<double, double> range_of(const Config& config, const std::string& key,
+                                   std::pair<double, double> fallback) {
+  if (!config.has(key)) return fallback;
+  const std::vector<double> values = config.get<std::vector<double>>(key);
+  if (values.size() != 2) throw Error("needs [min, max]", key_where(config, key));
+  return {values[0], values[1]};
+}
+
+}  // namespace
+
+SaturatingSignalSpec saturating_signal_from(const Config& config) {
+  SaturatingSignalSpec spec;
+  spec.ceiling_min = config.get_or<double>("ceiling_min_bar", spec.ceiling_min);
+  spec.ceiling_max = config.get_or<double>("ceiling_max_bar", spec.ceiling_max);
+  std::tie(spec.ceiling_hold_min, spec.ceiling_hold_max) =
+      range_of(config, "ceiling_hold_s", {spec.ceiling_hold_min, spec.ceiling_hold_max});
+  std::tie(spec.hold_min, spec.hold_max) =
+      range_of(config, "hold_s", {spec.hold_min, spec.hold_max});
+  spec.saturation_probability =
+      config.get_or<double>("saturation_probability", spec.saturation_probability);
+  try {
+    spec.validate();
+  } catch (const Error& e) {
+    throw Error(e.what_wrong(), config.source() + ": " + config.path());
+  }
+  return spec;
+}
 
 void SaturatingSignalSpec::validate() const {
   const char* where = "SaturatingSignalSpec";

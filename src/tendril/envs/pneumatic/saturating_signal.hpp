@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "tendril/core/config.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/core/snapshot.hpp"
 #include "tendril/physics/twins/pneumatic/chambers.hpp"
@@ -29,6 +30,11 @@ struct SaturatingSignalSpec {
 
   void validate() const;
 };
+
+// The spec from an experiment's `signal` mapping (all optional): ceiling_min_bar,
+// ceiling_max_bar, ceiling_hold_s: [min, max], hold_s: [min, max], saturation_probability.
+// Raises Error naming the mapping for inconsistent values.
+SaturatingSignalSpec saturating_signal_from(const Config& config);
 
 class SaturatingSignal {
  public:
