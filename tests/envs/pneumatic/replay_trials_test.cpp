@@ -30,8 +30,12 @@ TEST_F(ReplayTrials, TheDeterministicTwinRepeatsAndDamageShowsAsAGap) {
   ASSERT_EQ(report.rows.size(), 2u * 3u * 3u);
   for (const ReplayReport::Row& row : report.rows) {
     EXPECT_EQ(row.mad_from_own_base_mm, 0.0) << row.scenario << " " << row.trial;
-    if (row.scenario == "S0") EXPECT_EQ(row.mad_from_reference_mm, 0.0);
-    if (row.scenario == "S3" && row.module == 3) EXPECT_GT(row.mad_from_reference_mm, 1.0);
+    if (row.scenario == "S0") {
+      EXPECT_EQ(row.mad_from_reference_mm, 0.0);
+    }
+    if (row.scenario == "S3" && row.module == 3) {
+      EXPECT_GT(row.mad_from_reference_mm, 1.0);
+    }
   }
   EXPECT_EQ(report.module_3_gap_mm.rows(), 30);
   EXPECT_EQ(report.module_3_gap_mm.col(0).maxCoeff(), 0.0);
