@@ -6,6 +6,7 @@
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "tendril/envs/pneumatic/collect_dataset.hpp"
+#include "tendril/envs/pneumatic/reach_task.hpp"
 
 namespace tendril::apps {
 
@@ -24,6 +25,14 @@ int pneumatic_collect_command(const std::vector<std::string>& args) {
   std::printf("module-3 tip range [mm]: x %.1f … %.1f, y %.1f … %.1f, z %.1f … %.1f\n",
               tips.col(6).minCoeff(), tips.col(6).maxCoeff(), tips.col(7).minCoeff(),
               tips.col(7).maxCoeff(), tips.col(8).minCoeff(), tips.col(8).maxCoeff());
+  // How much of the recording the seed's boundary box B (Sec. III-A) holds.
+  const Eigen::AlignedBox3d boundary = envs::pneumatic::ReachTaskSpec::preset("main").boundary;
+  int inside = 0;
+  for (int k = 0; k < report.rows; ++k) {
+    inside += boundary.contains(Eigen::Vector3d(tips(k, 6), tips(k, 7), tips(k, 8))) ? 1 : 0;
+  }
+  std::printf("module-3 tip inside the seed's boundary box B in %.1f %% of the rows\n",
+              100.0 * inside / report.rows);
   std::printf("wrote %s\n", report.file.string().c_str());
   return 0;
 }
