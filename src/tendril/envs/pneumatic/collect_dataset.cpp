@@ -6,6 +6,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/envs/pneumatic/arm_params.hpp"
+#include "tendril/envs/pneumatic/decimal_text.hpp"
 #include "tendril/envs/registry.hpp"
 
 namespace tendril::envs::pneumatic {
@@ -26,19 +27,15 @@ PneumaticDataset record_pneumatic_dataset(Env& robot, SaturatingSignal& signal, 
   // Values are kept at the resolution that matters (1 µm, 0.1 mbar), so the file stays short;
   // the commands are rounded before they are sent, so the file holds what was sent (to the
   // float precision of the interface).
-  // (Dividing the rounded count by the integer scale gives the double nearest the decimal.)
-  const auto round_to = [](double value, double scale) {
-    return std::round(value * scale) / scale;
-  };
   Observation observation = robot.reset(seed);
   for (int k = 0; k < rows; ++k) {
-    data.time_s[k] = round_to(k * period, 1e9);
+    data.time_s[k] = rounded(k * period, 1e9);
     for (int c = 0; c < 9; ++c) {
-      data.tips_mm(k, c) = round_to(observation[c], 1e3);
-      if (observed == 18) data.pressures_bar(k, c) = round_to(observation[9 + c], 1e4);
+      data.tips_mm(k, c) = rounded(observation[c], 1e3);
+      if (observed == 18) data.pressures_bar(k, c) = rounded(observation[9 + c], 1e4);
     }
     physics::pneumatic::ChamberVector commands = signal.next(period);
-    for (int c = 0; c < 9; ++c) commands[c] = round_to(commands[c], 1e4);
+    for (int c = 0; c < 9; ++c) commands[c] = rounded(commands[c], 1e4);
     data.commands_bar.row(k) = commands.transpose();
     if (k + 1 == rows) break;
     const Step step = robot.step(commands.cast<float>());

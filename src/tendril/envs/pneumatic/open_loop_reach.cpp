@@ -1,13 +1,13 @@
 #include "tendril/envs/pneumatic/open_loop_reach.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/pneumatic/arm_params.hpp"
+#include "tendril/envs/pneumatic/decimal_text.hpp"
 #include "tendril/envs/pneumatic/reach_task.hpp"
 #include "tendril/envs/pneumatic/robot_env.hpp"
 
@@ -33,12 +33,6 @@ Eigen::Vector3d run_plan(Env& arm, const ChamberVector& pressures, int steps,
     observation = arm.step(commands.cast<float>()).observation;
   }
   return module_3_tip(observation);
-}
-
-std::string number(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
 }
 
 }  // namespace
@@ -132,10 +126,10 @@ void write_open_loop_report(const OpenLoopReport& report, const std::filesystem:
     text += ": p* [bar] =";
     for (int k = 0; k < 9; ++k) {
       text += ' ';
-      text += number(std::round(goal.pressures[k] * 1e4) / 1e4);
+      text += shortest_text(rounded(goal.pressures[k], 1e4));
     }
     text += "; model's final distance ";
-    text += number(std::round(goal.model_distance * 1e3) / 1e3);
+    text += shortest_text(rounded(goal.model_distance, 1e3));
     text += " mm\n";
   }
   text += "scenario,goal,trial,final_distance_mm\n";
@@ -146,7 +140,7 @@ void write_open_loop_report(const OpenLoopReport& report, const std::filesystem:
     text += ',';
     text += std::to_string(row.trial);
     text += ',';
-    text += number(std::round(row.final_distance_mm * 1e3) / 1e3);
+    text += shortest_text(rounded(row.final_distance_mm, 1e3));
     text += '\n';
   }
   std::filesystem::create_directories(directory);

@@ -7,18 +7,13 @@
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/envs/pneumatic/decimal_text.hpp"
 
 namespace tendril::envs::pneumatic {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, result.ptr);
-}
 
 std::vector<std::string_view> split(std::string_view line, char separator) {
   std::vector<std::string_view> fields;
@@ -99,11 +94,11 @@ void write_pneumatic_dataset(const fs::path& file, const PneumaticDataset& data)
   const auto append_row = [&](const PneumaticDataset::Columns& columns, Eigen::Index k) {
     for (int c = 0; c < 9; ++c) {
       text += ',';
-      append_number(text, columns(k, c));
+      text += shortest_text(columns(k, c));
     }
   };
   for (Eigen::Index k = 0; k < rows; ++k) {
-    append_number(text, data.time_s[k]);
+    text += shortest_text(data.time_s[k]);
     append_row(data.commands_bar, k);
     if (data.has_pressures()) append_row(data.pressures_bar, k);
     append_row(data.tips_mm, k);

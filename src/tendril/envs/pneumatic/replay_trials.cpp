@@ -1,12 +1,12 @@
 #include "tendril/envs/pneumatic/replay_trials.hpp"
 
-#include <charconv>
 #include <chrono>
 #include <cmath>
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/pneumatic/arm_params.hpp"
+#include "tendril/envs/pneumatic/decimal_text.hpp"
 #include "tendril/envs/pneumatic/saturating_signal.hpp"
 #include "tendril/envs/registry.hpp"
 
@@ -19,12 +19,6 @@ using Trajectory = Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>;  /
 // Mean over steps of module m's tip distance between two trajectories.
 double mad(const Trajectory& a, const Trajectory& b, int module) {
   return (a.middleCols<3>(3 * module) - b.middleCols<3>(3 * module)).rowwise().norm().mean();
-}
-
-std::string number(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
 }
 
 }  // namespace
@@ -107,11 +101,11 @@ void write_replay_report(const ReplayReport& report, const std::filesystem::path
   for (const ReplayReport::Row& row : report.rows) {
     for (const std::string& field :
          {row.scenario, std::to_string(row.trial), std::to_string(row.module),
-          number(std::round(row.mad_from_reference_mm * 1e3) / 1e3)}) {
+          shortest_text(rounded(row.mad_from_reference_mm, 1e3))}) {
       summary += field;
       summary += ',';
     }
-    summary += number(std::round(row.mad_from_own_base_mm * 1e3) / 1e3);
+    summary += shortest_text(rounded(row.mad_from_own_base_mm, 1e3));
     summary += '\n';
   }
   std::string series = "# " + invocation + "\ntime_s";
@@ -122,10 +116,10 @@ void write_replay_report(const ReplayReport& report, const std::filesystem::path
   }
   series += "\n";
   for (Eigen::Index k = 0; k < report.module_3_gap_mm.rows(); ++k) {
-    series += number(std::round((k + 1) * report.period * 1e9) / 1e9);
+    series += shortest_text(rounded((k + 1) * report.period, 1e9));
     for (Eigen::Index s = 0; s < report.module_3_gap_mm.cols(); ++s) {
       series += ',';
-      series += number(std::round(report.module_3_gap_mm(k, s) * 1e3) / 1e3);
+      series += shortest_text(rounded(report.module_3_gap_mm(k, s), 1e3));
     }
     series += "\n";
   }
