@@ -10,12 +10,16 @@ DamageScenario parse_damage_scenario(std::string_view name, std::string_view whe
   if (name == "S2") return DamageScenario::kS2;
   if (name == "S3") return DamageScenario::kS3;
   if (name == "S4") return DamageScenario::kS4;
-  throw Error("unknown damage scenario '" + std::string(name) + "' (expected S0, S1, S2, S3 or S4)",
-              std::string(where));
+  std::string what = "unknown damage scenario '";
+  what += name;
+  what += "' (expected S0, S1, S2, S3 or S4)";
+  throw Error(what, std::string(where));
 }
 
 std::string to_string(DamageScenario scenario) {
-  return "S" + std::to_string(static_cast<int>(scenario));
+  std::string name = "S";
+  name += std::to_string(static_cast<int>(scenario));
+  return name;
 }
 
 std::array<bool, kChambers> disabled_chambers(DamageScenario scenario, int chamber) {

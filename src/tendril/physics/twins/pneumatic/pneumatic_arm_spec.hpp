@@ -55,10 +55,9 @@ struct PneumaticArmSpec {
   double time_step = 5.0e-4;            // s; must divide the sensor's sample period
 
   // Actuation, [A] calibration (docs/results/pneumatic_arm.md): one chamber at the 1.5 bar
-  // ceiling bends a free module 45° (30°/bar); all three at 1.5 bar extend it 15 %. With these
-  // the tip's workspace under random pressures spans about ±130 mm (10th–90th percentile)
-  // around the rest point and z from −530 to −650 mm, so the seed's boundary box B covers its
-  // centre and its four goals are reachable (G3, at z −645 mm, only near the edge).
+  // ceiling bends a free module 45° (30°/bar); all three at 1.5 bar extend it 15 %. With these,
+  // under the data protocol, module 3's tip stays inside the seed's boundary box B in two thirds
+  // of the samples, and its four goals are reachable (G3, at z −645 mm, only near the edge).
   double bend_per_bar = 30.0 * 3.14159265358979323846 / 180.0;  // rad per bar, one chamber
   double extension_per_bar = 0.10;
   // Angle of chamber 0 of each module in the base plane, from +x toward +y, rad; chambers 1 and

@@ -27,10 +27,17 @@ void ModuleActuationSpec::validate() const {
   regulators.validate();
 }
 
+namespace {
+
+const ModuleActuationSpec& validated(const ModuleActuationSpec& spec) {
+  spec.validate();
+  return spec;
+}
+
+}  // namespace
+
 PneumaticModules::PneumaticModules(const ModuleActuationSpec& spec)
-    : spec_(spec),
-      regulators_((spec.validate(), spec.regulators)),
-      hysteresis_(spec.hysteresis_width_bar) {
+    : spec_(validated(spec)), regulators_(spec.regulators), hysteresis_(spec.hysteresis_width_bar) {
   const double per_bar = spec_.bend_per_bar / spec_.module_length;
   for (int k = 0; k < kChambers; ++k) {
     // r̂ × d3 for r̂ = (cos θ, sin θ, 0): an extending chamber curves the module away from it.
