@@ -11,5 +11,7 @@ int list_envs_command(const std::vector<std::string>& args);
 int train_command(const std::vector<std::string>& args);
 int eval_command(const std::vector<std::string>& args);
 int sweep_command(const std::vector<std::string>& args);
+int pneumatic_collect_command(const std::vector<std::string>& args);
+int pneumatic_replay_command(const std::vector<std::string>& args);
 
 }  // namespace tendril::apps

@@ -28,6 +28,12 @@ commands:
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.
+  collect-pneumatic <collect.yaml> [--set key=value ...] [--out FILE]
+      Record the pneumatic arm's data set (seed 002: 10 min at 10 Hz under a dynamically
+      saturating pressure signal) from PneumaticArm/Robot-v0 into a CSV file.
+  replay-pneumatic <replay.yaml> [--set key=value ...] [--out DIR]
+      Replay one pressure trajectory on the pneumatic arm in repeated trials per damage
+      scenario; write each module's mean distance from the base trial (replay_gap.csv).
   list-envs
       The registered environment ids.
   help
@@ -51,6 +57,8 @@ int main(int argc, char** argv) {
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
 #ifdef TENDRIL_WITH_ENVS
     if (args[0] == "list-envs") return tendril::apps::list_envs_command(rest);
+    if (args[0] == "collect-pneumatic") return tendril::apps::pneumatic_collect_command(rest);
+    if (args[0] == "replay-pneumatic") return tendril::apps::pneumatic_replay_command(rest);
 #endif
 #ifdef TENDRIL_WITH_RL
     if (args[0] == "train") return tendril::apps::train_command(rest);

@@ -16,10 +16,11 @@ using testing::error_message;
 
 TEST(Registry, ListsTheBuiltinReferenceTasks) {
   EXPECT_EQ(registered_ids(),
-            (std::vector<std::string>{
-                "CartPole-v1", "Elastica/OrientedReach-v0", "Elastica/StructuredObstacles-v0",
-                "Elastica/Tracking3D-v0", "Elastica/UnstructuredObstacles-v0", "Identity-v0",
-                "IdentityBox-v0", "MountainCarContinuous-v0", "Pendulum-v1"}));
+            (std::vector<std::string>{"CartPole-v1", "Elastica/OrientedReach-v0",
+                                      "Elastica/StructuredObstacles-v0", "Elastica/Tracking3D-v0",
+                                      "Elastica/UnstructuredObstacles-v0", "Identity-v0",
+                                      "IdentityBox-v0", "MountainCarContinuous-v0", "Pendulum-v1",
+                                      "PneumaticArm/Reach-v0", "PneumaticArm/Robot-v0"}));
   EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
   EXPECT_EQ(builtin_registry().spec("CartPole-v1").max_episode_steps, 500);
   EXPECT_EQ(builtin_registry().spec("MountainCarContinuous-v0").max_episode_steps, 999);
@@ -32,7 +33,8 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "envs::make: unknown environment id 'Pendulum-v0'; registered ids: CartPole-v1, "
             "Elastica/OrientedReach-v0, Elastica/StructuredObstacles-v0, Elastica/Tracking3D-v0, "
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
-            "MountainCarContinuous-v0, Pendulum-v1");
+            "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/Reach-v0, "
+            "PneumaticArm/Robot-v0");
 }
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {

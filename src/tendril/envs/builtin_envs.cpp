@@ -9,6 +9,8 @@
 #include "tendril/envs/elastica/unstructured_obstacles.hpp"
 #include "tendril/envs/identity/identity.hpp"
 #include "tendril/envs/identity/identity_box.hpp"
+#include "tendril/envs/pneumatic/reach_env.hpp"
+#include "tendril/envs/pneumatic/robot_env.hpp"
 
 namespace tendril::envs {
 
@@ -35,6 +37,15 @@ void register_builtin_envs(Registry& registry) {
   registry.add({"Elastica/UnstructuredObstacles-v0", &elastica::UnstructuredObstacles::create,
                 elastica::UnstructuredObstacles::kEpisodeSteps,
                 "soft arm reaches through a random nest of cylinders (case 4)"});
+  // The three-module pneumatic arm of seed 002 (SPEC M9): the robot interface with its twin
+  // behind; trials of the paper's 150 control steps (15 s).
+  registry.add({pneumatic::RobotEnv::kId, &pneumatic::RobotEnv::create,
+                pneumatic::RobotEnv::kTrialSteps,
+                "pneumatic 3-module arm twin: 9 pressures in, 3 tip positions out (robot)"});
+  // Its reaching task past a plate (seed 002 §IV-A, eq. (2)) on that robot, 150 steps of 0.1 s.
+  registry.add({pneumatic::ReachEnv::kRobotId, &pneumatic::ReachEnv::create_on_robot,
+                pneumatic::ReachEnv::kEpisodeSteps,
+                "pneumatic arm reaches a goal behind a plate (task on the robot twin)"});
 }
 
 }  // namespace tendril::envs

@@ -1,0 +1,107 @@
+#include "tendril/envs/pneumatic/arm_params.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::envs::pneumatic {
+
+namespace {
+
+using physics::pneumatic::PneumaticArmSpec;
+
+double non_negative(const Config& config, const std::string& key, double fallback) {
+  const double value = config.get_or<double>(key, fallback);
+  if (!(std::isfinite(value) && value >= 0.0)) {
+    throw Error("must be finite and non-negative, got " + std::to_string(value),
+                key_where(config, key));
+  }
+  return value;
+}
+
+double positive(const Config& config, const std::string& key, double fallback) {
+  const double value = config.get_or<double>(key, fallback);
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw Error("must be finite and positive, got " + std::to_string(value),
+                key_where(config, key));
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string key_where(const Config& config, const std::string& key) {
+  const std::string path = config.path().empty() ? key : config.path() + "." + key;
+  return config.source() + ": " + path;
+}
+
+PneumaticArmSpec arm_spec_from(const Config& params) {
+  PneumaticArmSpec spec;
+  spec.scenario = physics::pneumatic::parse_damage_scenario(
+      params.get_or<std::string>("scenario", "S0"), key_where(params, "scenario"));
+  spec.damaged_chamber = params.get_or<int>("damaged_chamber", 0);
+  if (spec.damaged_chamber < 0 || spec.damaged_chamber > 2) {
+    throw Error("must be 0, 1 or 2, got " + std::to_string(spec.damaged_chamber),
+                key_where(params, "damaged_chamber"));
+  }
+  spec.instance_seed = params.get_or<uint64_t>("instance_seed", 0);
+
+  const bool stochastic = params.get_or<bool>("stochastic", true);
+  auto& effects = spec.effects;
+  const Config drift = params.child("drift");
+  effects.drift = drift.get_or<bool>("enabled", stochastic);
+  effects.drift_step = 1e-3 * non_negative(drift, "step_mm", 1e3 * effects.drift_step);
+  effects.drift_cap = 1e-3 * non_negative(drift, "cap_mm", 1e3 * effects.drift_cap);
+  const Config hysteresis = params.child("hysteresis");
+  effects.hysteresis = hysteresis.get_or<bool>("enabled", stochastic);
+  effects.hysteresis_width = non_negative(hysteresis, "width_bar", effects.hysteresis_width);
+  const Config imbalance = params.child("imbalance");
+  effects.imbalance = imbalance.get_or<bool>("enabled", stochastic);
+  effects.gain_spread = non_negative(imbalance, "gain_spread", effects.gain_spread);
+  if (effects.gain_spread >= 1.0) {
+    throw Error("must be below 1", key_where(imbalance, "gain_spread"));
+  }
+  effects.eccentricity =
+      1e-3 * non_negative(imbalance, "eccentricity_mm", 1e3 * effects.eccentricity);
+  const Config noise = params.child("sensor_noise");
+  effects.sensor_noise = noise.get_or<bool>("enabled", stochastic);
+  effects.marker_noise = 1e-3 * non_negative(noise, "marker_sigma_mm", 1e3 * effects.marker_noise);
+  spec.sensor.latency = non_negative(params, "sensor_latency_s", spec.sensor.latency);
+  // One knob for calibrating the twin's stochasticity against the paper's gap.
+  const double scale = non_negative(params, "magnitude_scale", 1.0);
+  effects.drift_step *= scale;
+  effects.drift_cap *= scale;
+  effects.hysteresis_width *= scale;
+  effects.gain_spread *= scale;
+  effects.eccentricity *= scale;
+  effects.marker_noise *= scale;
+  if (effects.gain_spread >= 1.0) {
+    throw Error("makes the chamber gain spread reach 1 or more",
+                key_where(params, "magnitude_scale"));
+  }
+
+  const Config twin = params.child("twin");
+  spec.elements_per_module = twin.get_or<int>("elements_per_module", spec.elements_per_module);
+  if (spec.elements_per_module < 1) {
+    throw Error("must be at least 1", key_where(twin, "elements_per_module"));
+  }
+  spec.time_step = positive(twin, "time_step_s", spec.time_step);
+  spec.bend_per_bar =
+      std::numbers::pi / 180.0 *
+      non_negative(twin, "bend_deg_per_bar", spec.bend_per_bar * 180.0 / std::numbers::pi);
+  spec.extension_per_bar = non_negative(twin, "extension_per_bar", spec.extension_per_bar);
+  spec.regulators.inflate_time = positive(twin, "inflate_time_s", spec.regulators.inflate_time);
+  spec.regulators.deflate_time = positive(twin, "deflate_time_s", spec.regulators.deflate_time);
+  spec.regulators.ceiling_bar = positive(twin, "ceiling_bar", spec.regulators.ceiling_bar);
+  spec.settle_time = non_negative(twin, "settle_time_s", spec.settle_time);
+
+  try {
+    spec.validate();
+  } catch (const Error& e) {
+    throw Error(e.what_wrong(), params.source() + ": " + params.path());
+  }
+  return spec;
+}
+
+}  // namespace tendril::envs::pneumatic

@@ -1,0 +1,105 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "tendril/core/config.hpp"
+#include "tendril/core/env.hpp"
+#include "tendril/envs/pneumatic/arm_dynamics.hpp"
+#include "tendril/envs/pneumatic/reach_task.hpp"
+
+namespace tendril::envs::pneumatic {
+
+struct PneumaticDataset;
+
+// How observations are normalised (seed 002 §IV-A1: "normalized in the range −1 to 1 based on
+// the minimum and maximum values (in individual axes in each module) taken from the dataset").
+struct ReachObservationSpec {
+  TipVector tip_min, tip_max;  // mm, per coordinate, from the dynamics model's data set
+  // G_dist and O_dist enter as 2 d / distance_scale − 1 ([A]: the seed does not say how the
+  // distances are normalised; 300 mm is about the diagonal of B's horizontal extent).
+  double distance_scale = 300.0;
+  // [A] variant: the 9 normalised commands a_t appended (the spec's 20-dim observation).
+  bool observe_command = false;
+
+  // Bounds from data/pneumatic_arm/twin_s0.csv, the default twin's 10-minute data set
+  // (docs/results/pneumatic_arm.md gives the command that wrote it).
+  static ReachObservationSpec twin_dataset();
+  // Bounds from a data set's tip columns (the rest as defaults).
+  static ReachObservationSpec from_dataset(const PneumaticDataset& data);
+  int size() const { return observe_command ? 20 : 11; }
+  void validate() const;
+};
+
+// The reaching task of seed 002 §IV-A over an arm's dynamics: PneumaticArm/Reach-v0 on the
+// robot interface (the twin), and the learned-model environment with a model behind ArmDynamics.
+//
+//   action       9 deltas in [−max_delta, max_delta] (0.2), normalised units; the environment
+//                keeps the command a ∈ [−1, 1]⁹ (a = −1 ↔ 0 bar, a = 1 ↔ 1.5 bar: p = 0.75 (a + 1))
+//                and adds the delta to it, then caps it to [−1, 1] (the 1.5 bar ceiling). A delta
+//                beyond the rate limit (0.15 bar = 0.2 normalised, §IV-A3) is not taken: the
+//                command stays, the arm steps under it and the usual reward applies (info
+//                "rate_limited" = 1). An Error for a wrong size or non-finite value.
+//   observation  the 9 tip coordinates normalised per axis by ReachObservationSpec, then G_dist and
+//                O_dist normalised (11 values; 20 with the command).
+//   reward       evaluate_reach_step (eq. (2) with the −2 step penalty) on module 3's tip.
+//   reset        the arm at rest with every chamber vented (a = −1).
+// Info: "distance" (G_dist in m), "goal_distance_mm", "obstacle_distance_mm", "is_success",
+// "collision", "warning", "outside_boundary", "rate_limited", "nan". Episodes are cut by the
+// registry's time limit (150 steps, §IV-A3).
+class ReachEnv : public Env {
+ public:
+  struct Setup {
+    std::string id;
+    ReachTaskSpec task;
+    ReachObservationSpec observation = ReachObservationSpec::twin_dataset();
+    double max_delta = 0.2;   // action bound, normalised
+    double rate_limit = 0.2;  // largest delta taken, normalised (0.15 bar)
+  };
+
+  // Reads the task and observation parameters shared by every dynamics source:
+  //   task: main | G1 | G2 | G3          goal_mm: [x, y, z]
+  //   obstacle_min_mm, obstacle_max_mm:  [x, y, z]      boundary: paper | relaxed
+  //   boundary_min_mm, boundary_max_mm:  [x, y, z]      obstacle_distance: box | plane
+  //   success_distance_mm: 5             terminate_outside_boundary: true
+  //   observe_command: false             rate_limit_bar: 0.15
+  //   normalization: {dataset: FILE, tip_min_mm: [9], tip_max_mm: [9], distance_scale_mm: 300}
+  //     (bounds from the data set FILE, else the default twin's; tip_min_mm/tip_max_mm override)
+  static Setup setup_from(const Config& params, std::string id);
+  // PneumaticArm/Reach-v0: the task on PneumaticArm/Robot-v0 built from params.robot.
+  static std::unique_ptr<Env> create_on_robot(const Config& params);
+  static constexpr const char* kRobotId = "PneumaticArm/Reach-v0";
+  static constexpr int64_t kEpisodeSteps = 150;
+
+  ReachEnv(Setup setup, std::unique_ptr<ArmDynamics> dynamics);
+
+  const Space& observation_space() const override { return observation_space_; }
+  const Space& action_space() const override { return action_space_; }
+  Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
+  Step step(const Action& action) override;
+  bool supports_snapshots() const override { return dynamics_->supports_snapshots(); }
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
+  // The arm (from the dynamics), the goal, the plate and the boundary box.
+  bool describe_scene(Scene& scene) const override;
+
+  static double pressure_of(double command) { return 0.75 * (command + 1.0); }
+  const ChamberVector& command() const { return command_; }  // normalised
+  const TipVector& tips() const { return tips_; }            // mm
+  const ReachTaskSpec& task() const { return setup_.task; }
+  ArmDynamics& dynamics() { return *dynamics_; }
+
+ private:
+  Observation observe(const ReachOutcome& outcome) const;
+
+  Setup setup_;
+  std::unique_ptr<ArmDynamics> dynamics_;
+  Space observation_space_, action_space_;
+  ChamberVector command_ = ChamberVector::Constant(-1.0);
+  TipVector tips_ = TipVector::Zero();
+  Observation last_observation_;
+  Info info_;
+};
+
+}  // namespace tendril::envs::pneumatic

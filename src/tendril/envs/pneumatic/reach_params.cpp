@@ -1,0 +1,108 @@
+// ReachEnv's parameters from an experiment's env.params, and PneumaticArm/Reach-v0.
+#include <cmath>
+
+#include "tendril/core/error.hpp"
+#include "tendril/envs/pneumatic/arm_params.hpp"
+#include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
+#include "tendril/envs/pneumatic/reach_env.hpp"
+#include "tendril/envs/pneumatic/robot_dynamics.hpp"
+#include "tendril/envs/pneumatic/robot_env.hpp"
+
+namespace tendril::envs::pneumatic {
+
+namespace {
+
+template <int N>
+Eigen::Matrix<double, N, 1> vector_of(const Config& config, const std::string& key,
+                                      const Eigen::Matrix<double, N, 1>& fallback) {
+  if (!config.has(key)) return fallback;
+  const std::vector<double> values = config.get<std::vector<double>>(key);
+  if (static_cast<int>(values.size()) != N) {
+    throw Error("needs " + std::to_string(N) + " numbers, got " + std::to_string(values.size()),
+                key_where(config, key));
+  }
+  Eigen::Matrix<double, N, 1> result;
+  for (int i = 0; i < N; ++i) {
+    if (!std::isfinite(values[i])) throw Error("must be finite", key_where(config, key));
+    result[i] = values[i];
+  }
+  return result;
+}
+
+Eigen::AlignedBox3d box_of(const Config& config, const std::string& min_key,
+                           const std::string& max_key, const Eigen::AlignedBox3d& fallback) {
+  const Eigen::AlignedBox3d box(vector_of<3>(config, min_key, fallback.min()),
+                                vector_of<3>(config, max_key, fallback.max()));
+  if (!(box.max().array() > box.min().array()).all()) {
+    throw Error("needs max > min on every axis", key_where(config, max_key));
+  }
+  return box;
+}
+
+}  // namespace
+
+ReachEnv::Setup ReachEnv::setup_from(const Config& params, std::string id) {
+  Setup setup;
+  setup.id = std::move(id);
+  ReachTaskSpec& task = setup.task;
+  task =
+      ReachTaskSpec::preset(params.get_or<std::string>("task", "main"), key_where(params, "task"));
+  task.goal = vector_of<3>(params, "goal_mm", task.goal);
+  task.obstacle = box_of(params, "obstacle_min_mm", "obstacle_max_mm", task.obstacle);
+  const std::string boundary = params.get_or<std::string>("boundary", "paper");
+  if (boundary == "relaxed") {
+    task.boundary = ReachTaskSpec::relaxed_boundary();
+  } else if (boundary != "paper") {
+    throw Error("must be paper or relaxed, got '" + boundary + "'", key_where(params, "boundary"));
+  }
+  task.boundary = box_of(params, "boundary_min_mm", "boundary_max_mm", task.boundary);
+  const std::string distance = params.get_or<std::string>("obstacle_distance", "box");
+  if (distance == "plane") {
+    task.obstacle_distance = ReachTaskSpec::ObstacleDistance::kPlane;
+  } else if (distance != "box") {
+    throw Error("must be box or plane, got '" + distance + "'",
+                key_where(params, "obstacle_distance"));
+  }
+  task.success_distance = params.get_or<double>("success_distance_mm", task.success_distance);
+  task.terminate_outside_boundary =
+      params.get_or<bool>("terminate_outside_boundary", task.terminate_outside_boundary);
+  try {
+    task.validate();
+  } catch (const Error& e) {
+    throw Error(e.what_wrong(), params.source() + ": " + params.path());
+  }
+
+  const double rate_limit_bar = params.get_or<double>("rate_limit_bar", 0.15);
+  if (!(std::isfinite(rate_limit_bar) && rate_limit_bar > 0.0)) {
+    throw Error("must be positive", key_where(params, "rate_limit_bar"));
+  }
+  setup.rate_limit = rate_limit_bar / 0.75;  // bar → normalised command units
+
+  ReachObservationSpec& observation = setup.observation;
+  observation.observe_command = params.get_or<bool>("observe_command", false);
+  const Config normalization = params.child("normalization");
+  if (normalization.has("dataset")) {
+    const ReachObservationSpec bounds = ReachObservationSpec::from_dataset(
+        read_pneumatic_dataset(normalization.get<std::string>("dataset")));
+    observation.tip_min = bounds.tip_min;
+    observation.tip_max = bounds.tip_max;
+  }
+  observation.tip_min = vector_of<9>(normalization, "tip_min_mm", observation.tip_min);
+  observation.tip_max = vector_of<9>(normalization, "tip_max_mm", observation.tip_max);
+  observation.distance_scale =
+      normalization.get_or<double>("distance_scale_mm", observation.distance_scale);
+  try {
+    observation.validate();
+  } catch (const Error& e) {
+    throw Error(e.what_wrong(), normalization.source() + ": " + normalization.path());
+  }
+  return setup;
+}
+
+std::unique_ptr<Env> ReachEnv::create_on_robot(const Config& params) {
+  Setup setup = setup_from(params, kRobotId);
+  auto dynamics = std::make_unique<RobotDynamics>(RobotEnv::create(params.child("robot")));
+  return std::make_unique<ReachEnv>(std::move(setup), std::move(dynamics));
+}
+
+}  // namespace tendril::envs::pneumatic
