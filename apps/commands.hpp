@@ -11,5 +11,8 @@ int list_envs_command(const std::vector<std::string>& args);
 int train_command(const std::vector<std::string>& args);
 int eval_command(const std::vector<std::string>& args);
 int sweep_command(const std::vector<std::string>& args);
+int serve_command(const std::vector<std::string>& args);
+int record_command(const std::vector<std::string>& args);
+int plot_command(const std::vector<std::string>& args);
 
 }  // namespace tendril::apps
