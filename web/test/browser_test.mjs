@@ -141,11 +141,13 @@ try {
     const sceneInk = await ink(page, '.viewport canvas');
     check(sceneInk > 0.01, `${name}: the 3D view draws the scene (${(100 * sceneInk).toFixed(2)}% of pixels)`);
     const before = await page.$eval('input[type=range]', (el) => Number(el.value));
+    await page.selectOption('select[aria-label=speed]', '0.1');  // too slow to end while we watch
     await page.click('button.play');
     await page.waitForTimeout(1200);
     const played = await page.$eval('input[type=range]', (el) => Number(el.value));
     check(played > before, `${name}: play advances the frames (${before} → ${played})`);
-    if ((await page.textContent('button.play')) === 'pause') await page.click('button.play');
+    check((await page.textContent('button.play')) === 'pause', `${name}: still playing at 0.1×`);
+    await page.click('button.play');  // pause
     const target = await page.$eval('input[type=range]', (el) => {
       el.value = String(Math.round(Number(el.max) * 0.6));
       el.dispatchEvent(new Event('input'));
