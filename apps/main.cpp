@@ -34,6 +34,17 @@ commands:
   replay-pneumatic <replay.yaml> [--set key=value ...] [--out DIR]
       Replay one pressure trajectory on the pneumatic arm in repeated trials per damage
       scenario; write each module's mean distance from the base trial (replay_gap.csv).
+  record <run-dir> [--episodes N] [--best] [--out DIR] [--seed S] [--deterministic|--stochastic]
+      Record episodes of a run's model (as eval picks it) into <run-dir>/episodes/ (or DIR):
+      the scene of every step, actions, rewards, info (docs/episode_format.md).
+  serve <dir> [--port P] [--host H]
+      The dashboard of the runs under DIR at http://127.0.0.1:8050/: learning curves that
+      follow training, seeds side by side, configs, 3D replays of recorded episodes.
+      Read-only; binds to 127.0.0.1 unless --host says otherwise.
+  plot curves|episode|csv ... --out FILE.png|.svg|.pdf
+      Figures without a browser (matplotlib): learning curves of runs and sweeps with mean and
+      spread over seeds, snapshots of recorded episodes, any columns of CSV files.
+      `tendril plot <kind> --help` lists each kind's options.
   list-envs
       The registered environment ids.
   help
@@ -55,15 +66,20 @@ int main(int argc, char** argv) {
     tendril::nn::configure_numerics(1);
 #endif
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
+    if (args[0] == "plot") return tendril::apps::plot_command(rest);
 #ifdef TENDRIL_WITH_ENVS
     if (args[0] == "list-envs") return tendril::apps::list_envs_command(rest);
     if (args[0] == "collect-pneumatic") return tendril::apps::pneumatic_collect_command(rest);
     if (args[0] == "replay-pneumatic") return tendril::apps::pneumatic_replay_command(rest);
 #endif
+#ifdef TENDRIL_WITH_DASHBOARD
+    if (args[0] == "serve") return tendril::apps::serve_command(rest);
+#endif
 #ifdef TENDRIL_WITH_RL
     if (args[0] == "train") return tendril::apps::train_command(rest);
     if (args[0] == "eval") return tendril::apps::eval_command(rest);
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
+    if (args[0] == "record") return tendril::apps::record_command(rest);
 #endif
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", args[0].c_str(), kUsage);
     return 2;

@@ -68,6 +68,7 @@ int train_command(const std::vector<std::string>& args) {
               experiment.algorithm.c_str(), experiment.env.id.c_str(), experiment.env.n_envs,
               static_cast<long long>(experiment.n_timesteps),
               static_cast<unsigned long long>(experiment.seed), run.string().c_str());
+  std::printf("watch it live: tendril serve %s\n", run.string().c_str());
   std::fflush(stdout);  // before the progress line on standard error
   report(rl::train(experiment, run, options));
   return 0;

@@ -1,0 +1,37 @@
+#include "run_policy.hpp"
+
+#include "tendril/core/error.hpp"
+#include "tendril/envs/registry.hpp"
+#include "tendril/rl/policy.hpp"
+#include "tendril/rl/trainer.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
+
+namespace tendril::apps {
+
+namespace fs = std::filesystem;
+
+RunPolicy open_run_policy(const fs::path& run, bool best) {
+  require(fs::exists(run / "config.yaml"), "not a run directory (no config.yaml)", run.string());
+  RunPolicy result{rl::Experiment::from_config(Config::load_file(run / "config.yaml")), {}, {}, {},
+                   {}};
+  const rl::Experiment& experiment = result.experiment;
+  const fs::path file = run / (best ? "best_model.policy" : "model.policy");
+  require(!best || fs::exists(file), "no best_model.policy (the run's eval.save_best is off)",
+          run.string());
+  if (fs::exists(file)) {
+    result.source = file;
+    result.policy = rl::load_policy(file);
+    result.env = envs::make(experiment.env.id, experiment.env.params);
+    return result;
+  }
+  result.source = rl::latest_checkpoint(run);
+  std::shared_ptr<envs::VecEnv> training_env = rl::make_vec_env(experiment.env);
+  std::shared_ptr<rl::Algorithm> algorithm = rl::make_algorithm(experiment, *training_env);
+  algorithm->load(result.source);
+  result.env = rl::make_evaluation_env(experiment.env, *training_env);
+  result.policy = std::shared_ptr<const rl::Policy>(algorithm, &algorithm->policy());
+  result.keep_alive = training_env;
+  return result;
+}
+
+}  // namespace tendril::apps

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "tendril/core/env.hpp"
+#include "tendril/rl/experiment.hpp"
+#include "tendril/rl/policy.hpp"
+
+namespace tendril::apps {
+
+// A run's trained policy and an environment to run it on, as `eval` and `record` use them: the
+// run's policy file (model.policy, or best_model.policy with `best`), which acts on the raw
+// environment; or, for a run without one (paused, interrupted), its newest checkpoint's policy
+// on an environment with the run's frozen observation statistics. Raw rewards either way.
+struct RunPolicy {
+  rl::Experiment experiment;
+  std::filesystem::path source;  // the policy file or checkpoint it came from
+  std::unique_ptr<Env> env;
+  std::shared_ptr<const rl::Policy> policy;
+  std::shared_ptr<void> keep_alive;  // what the policy needs (a checkpoint's algorithm and env)
+};
+
+RunPolicy open_run_policy(const std::filesystem::path& run, bool best);
+
+}  // namespace tendril::apps

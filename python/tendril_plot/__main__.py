@@ -1,0 +1,80 @@
+"""`tendril plot` (python -m tendril_plot): figures from runs, sweeps, episodes and CSV files."""
+import argparse
+import sys
+
+from .episode import EpisodeError
+from .runs import PlotError
+
+
+def size(text):
+    try:
+        width, height = (float(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError("expected WIDTH,HEIGHT in inches, e.g. 6.4,4")
+    return (width, height)
+
+
+def common(parser, default_size):
+    parser.add_argument("--out", required=True, help="the figure's file: .png, .svg or .pdf")
+    parser.add_argument("--title")
+    parser.add_argument("--xlabel")
+    parser.add_argument("--ylabel")
+    parser.add_argument("--size", type=size, default=default_size, help="inches, WIDTH,HEIGHT")
+    parser.add_argument("--dpi", type=int, default=150)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog="tendril plot", description=__doc__)
+    kinds = parser.add_subparsers(dest="figure", required=True)
+
+    c = kinds.add_parser("curves", help="learning curves of runs and sweeps",
+                         description="Learning curves of runs; directories of runs (sweeps) "
+                         "add every run inside. Runs whose names differ only by seed "
+                         "(seed_3, _seed3) are drawn as their mean with a band.")
+    c.add_argument("runs", nargs="+", help="run directories or directories of runs")
+    c.add_argument("--metric", default="rollout/ep_rew_mean",
+                   help="a progress.csv column, or 'eval' for eval.csv's mean return")
+    c.add_argument("--x", default="time/total_timesteps", help="progress.csv column on the x axis")
+    c.add_argument("--group", choices=["seeds", "none"], default="seeds")
+    c.add_argument("--spread", choices=["std", "minmax", "none"], default="std")
+    c.add_argument("--seeds", action="store_true", help="also draw each seed thinly")
+    c.add_argument("--labels", help="comma-separated names of the curves, in order")
+    c.add_argument("--logx", action="store_true")
+    c.add_argument("--logy", nargs="?", const="log", choices=["log", "symlog"])
+    common(c, (6.4, 4.0))
+
+    e = kinds.add_parser("episode", help="snapshots of a recorded episode",
+                         description="The arm's shape at evenly spaced times in 3D and seen "
+                         "from above, the target's path, obstacles, and reward and distance "
+                         "over time.")
+    e.add_argument("episode", help="a recorded episode (.tep)")
+    e.add_argument("--snapshots", type=int, default=6)
+    e.add_argument("--up", choices=["auto", "x", "y", "z"], default="auto",
+                   help="the lab axis drawn upwards (auto: the first rod's direction)")
+    e.add_argument("--colormap", default="Oranges")
+    common(e, (10.0, 5.6))
+
+    v = kinds.add_parser("csv", help="columns of CSV files",
+                         description="Any columns of one or more CSV files against one column.")
+    v.add_argument("files", nargs="+")
+    v.add_argument("--x", required=True, help="the column on the x axis")
+    v.add_argument("--y", required=True, help="comma-separated columns on the y axis")
+    v.add_argument("--kind", choices=["line", "linepoints", "scatter"], default="line")
+    v.add_argument("--labels", help="comma-separated names, one per file and column")
+    v.add_argument("--logx", action="store_true")
+    v.add_argument("--logy", nargs="?", const="log", choices=["log", "symlog"])
+    common(v, (6.4, 4.0))
+
+    args = parser.parse_args(argv)
+    from . import figures  # matplotlib loads only when a figure is drawn
+
+    try:
+        {"curves": figures.curves, "episode": figures.episode, "csv": figures.csv_columns}[args.figure](args)
+    except (PlotError, EpisodeError) as error:
+        print(f"tendril plot: error: {error}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

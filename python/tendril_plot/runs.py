@@ -1,0 +1,109 @@
+"""Run directories, their CSV files, and seeds grouped into mean and spread."""
+import csv
+import math
+import os
+import re
+
+import numpy as np
+
+STEPS = "time/total_timesteps"
+
+
+class PlotError(ValueError):
+    pass
+
+
+def read_csv(path):
+    """Columns of a numeric CSV file as float arrays (empty or non-numeric cells: NaN). A last
+    line without its newline (a file being written) and rows with the wrong number of cells are
+    left out."""
+    try:
+        with open(path, newline="") as f:
+            text = f.read()
+    except OSError as e:
+        raise PlotError(f"{path}: {e.strerror}")
+    lines = text.split("\n")
+    if len(lines) < 2:
+        raise PlotError(f"{path}: no complete header line")
+    complete = lines[:-1]  # the part after the last newline is unfinished
+    reader = csv.reader(complete)
+    header = [h.strip() for h in next(reader)]
+    rows = [row for row in reader if len(row) == len(header)]
+
+    def number(cell):
+        try:
+            return float(cell)
+        except ValueError:
+            return math.nan
+
+    values = np.array([[number(c) for c in row] for row in rows], dtype=float).reshape(-1, len(header))
+    return {name: values[:, i] for i, name in enumerate(header)}
+
+
+def is_run(directory):
+    return any(os.path.isfile(os.path.join(directory, name))
+               for name in ("config.yaml", "progress.csv", "eval.csv"))
+
+
+def expand_runs(paths):
+    """Run directories named directly, and those directly inside the other directories given
+    (a sweep's output, seeds side by side), in order."""
+    runs = []
+    for path in paths:
+        if is_run(path):
+            runs.append(path)
+            continue
+        if not os.path.isdir(path):
+            raise PlotError(f"{path}: neither a run directory nor a directory of runs")
+        inside = sorted(os.path.join(path, d) for d in os.listdir(path)
+                        if not d.startswith(".") and is_run(os.path.join(path, d)))
+        if not inside:
+            raise PlotError(f"{path}: no run directories inside")
+        runs.extend(inside)
+    return runs
+
+
+def seed_group(name):
+    """A run's name without its seed: "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" →
+    "ppo_case1". Runs differing only by seed share a group."""
+    stripped = re.sub(r"(^|[-_])seed_?\d+", "", name, count=1, flags=re.IGNORECASE)
+    return stripped or name
+
+
+def curve(run, metric, x_column=STEPS):
+    """(x, y) of one run: a progress.csv column against `x_column`, or with metric "eval" the
+    mean evaluation return (and its std) against timesteps from eval.csv."""
+    if metric == "eval":
+        table = read_csv(os.path.join(run, "eval.csv"))
+        x, y = table["timesteps"], table["mean_return"]
+        spread = table.get("std_return")
+    else:
+        table = read_csv(os.path.join(run, "progress.csv"))
+        for column in (metric, x_column):
+            if column not in table:
+                raise PlotError(f"{run}/progress.csv has no column '{column}' "
+                                f"(it has: {', '.join(sorted(table))})")
+        x, y, spread = table[x_column], table[metric], None
+    keep = np.isfinite(x) & np.isfinite(y)
+    order = np.argsort(x[keep], kind="stable")
+    result = {"x": x[keep][order], "y": y[keep][order]}
+    if spread is not None:
+        result["std"] = spread[keep][order]
+    return result
+
+
+def aggregate(curves, points=200):
+    """Mean and standard deviation (population), minimum and maximum of curves on `points`
+    evenly spaced x values over the range every curve covers (so each point averages all seeds),
+    by linear interpolation."""
+    curves = [c for c in curves if len(c["x"]) > 0]
+    if not curves:
+        raise PlotError("no data to aggregate")
+    start = max(c["x"][0] for c in curves)
+    end = min(c["x"][-1] for c in curves)
+    if end < start:
+        raise PlotError("the runs' x ranges do not overlap")
+    grid = np.linspace(start, end, points) if end > start else np.array([start])
+    stack = np.array([np.interp(grid, c["x"], c["y"]) for c in curves])
+    return {"x": grid, "mean": stack.mean(axis=0), "std": stack.std(axis=0),
+            "min": stack.min(axis=0), "max": stack.max(axis=0), "n": len(curves)}

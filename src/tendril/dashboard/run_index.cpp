@@ -1,0 +1,110 @@
+#include "tendril/dashboard/run_index.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "tendril/core/config.hpp"
+#include "tendril/core/error.hpp"
+
+namespace tendril::dashboard {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double modified_seconds(const fs::path& file) {
+  std::error_code error;
+  const auto time = fs::last_write_time(file, error);
+  if (error) return 0.0;
+  const auto system = std::chrono::file_clock::to_sys(time);
+  return std::chrono::duration<double>(system.time_since_epoch()).count();
+}
+
+RunEntry describe_run(const ServedRoot& root, const fs::path& directory) {
+  RunEntry run;
+  run.path = root.relative(directory);
+  run.name = directory.filename().string();
+  run.has_progress = fs::is_regular_file(directory / "progress.csv");
+  run.has_eval = fs::is_regular_file(directory / "eval.csv");
+  run.episodes = static_cast<int>(episode_files(directory).size());
+  for (const char* file : {"config.yaml", "progress.csv", "eval.csv"}) {
+    run.modified = std::max(run.modified, modified_seconds(directory / file));
+  }
+  if (fs::is_regular_file(directory / "config.yaml")) {
+    try {
+      const Config config = Config::load_file(directory / "config.yaml");
+      run.env_id = config.child("env").get_or<std::string>("id", "");
+      run.algorithm = config.get_or<std::string>("algorithm", "");
+    } catch (const std::exception& e) {
+      run.problem = std::string("config.yaml: ") + e.what();
+    }
+  }
+  return run;
+}
+
+bool skipped(const fs::path& directory) {
+  const std::string name = directory.filename().string();
+  return name.empty() || name.front() == '.' || name == "checkpoints" || name == "episodes" ||
+         name == "node_modules";
+}
+
+// Adds the runs in `directory` (depth levels below the root) and returns how many of them lie
+// directly inside it.
+int visit(const ServedRoot& root, const fs::path& directory, int depth, int max_depth,
+          RunIndex& index) {
+  if (is_run_directory(directory)) {
+    index.runs.push_back(describe_run(root, directory));
+    return 1;
+  }
+  if (depth >= max_depth) return 0;
+  std::vector<fs::path> children;
+  std::error_code error;
+  for (fs::directory_iterator it(directory, error), end; !error && it != end; it.increment(error)) {
+    // Symbolic links are not followed: everything listed lies inside the root.
+    if (it->is_directory() && !it->is_symlink() && !skipped(it->path())) {
+      children.push_back(it->path());
+    }
+  }
+  std::sort(children.begin(), children.end());
+  SweepEntry sweep{root.relative(directory), directory.filename().string(), {}};
+  for (const fs::path& child : children) {
+    const std::size_t before = index.runs.size();
+    if (visit(root, child, depth + 1, max_depth, index) == 1) {
+      sweep.runs.push_back(index.runs[before].path);
+    }
+  }
+  if (sweep.runs.size() >= 2) index.sweeps.push_back(std::move(sweep));
+  return 0;
+}
+
+}  // namespace
+
+bool is_run_directory(const fs::path& directory) {
+  return fs::is_regular_file(directory / "config.yaml") ||
+         fs::is_regular_file(directory / "progress.csv") ||
+         fs::is_regular_file(directory / "eval.csv");
+}
+
+RunIndex index_runs(const ServedRoot& root, int max_depth) {
+  RunIndex index;
+  visit(root, root.path(), 0, max_depth, index);
+  std::sort(index.runs.begin(), index.runs.end(),
+            [](const RunEntry& a, const RunEntry& b) { return a.path < b.path; });
+  std::sort(index.sweeps.begin(), index.sweeps.end(),
+            [](const SweepEntry& a, const SweepEntry& b) { return a.path < b.path; });
+  return index;
+}
+
+std::vector<fs::path> episode_files(const fs::path& run_directory) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  const fs::path folder = run_directory / "episodes";
+  if (!fs::is_directory(folder, error)) return files;
+  for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    if (it->is_regular_file() && it->path().extension() == ".tep") files.push_back(it->path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace tendril::dashboard

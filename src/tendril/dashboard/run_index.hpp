@@ -1,0 +1,47 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tendril/dashboard/served_root.hpp"
+
+namespace tendril::dashboard {
+
+// A run directory as the dashboard lists it (paths relative to the served root, '/'-separated).
+struct RunEntry {
+  std::string path;
+  std::string name;       // the directory's name
+  std::string env_id;     // from config.yaml, when it says
+  std::string algorithm;  // from config.yaml, when it says
+  bool has_progress = false;
+  bool has_eval = false;
+  int episodes = 0;       // files in episodes/
+  double modified = 0.0;  // newest of config, progress and eval, seconds since the epoch
+  std::string problem;    // e.g. an unreadable config.yaml
+};
+
+// A directory holding runs side by side (a sweep's output, seeds of one experiment).
+struct SweepEntry {
+  std::string path;
+  std::string name;
+  std::vector<std::string> runs;  // paths of the runs directly inside it
+};
+
+struct RunIndex {
+  std::vector<RunEntry> runs;
+  std::vector<SweepEntry> sweeps;
+};
+
+// Whether `directory` is a run: it holds config.yaml, progress.csv or eval.csv.
+bool is_run_directory(const std::filesystem::path& directory);
+
+// The runs at most `max_depth` directories below the root (not looking inside runs or hidden
+// directories), sorted by path; a directory with at least two runs directly inside is a sweep.
+RunIndex index_runs(const ServedRoot& root, int max_depth = 6);
+
+// The episode files (*.tep) of a run directory's episodes/, sorted by name.
+std::vector<std::filesystem::path> episode_files(const std::filesystem::path& run_directory);
+
+}  // namespace tendril::dashboard

@@ -1,0 +1,160 @@
+"""`tendril plot` on real runs: a finished run, a sweep over seeds, recorded episodes, CSV files.
+Each figure must exist, be a valid PNG (or SVG/PDF) and not be blank; the Python episode reader
+must find what the C++ reader finds.
+    tendril_plot_test.py <tendril> <sample runs> <figure directory>"""
+import csv
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import unittest
+import zlib
+
+TENDRIL, RUNS, OUT = sys.argv[1:4]
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
+
+import numpy as np  # noqa: E402
+import matplotlib.image  # noqa: E402
+
+from tendril_plot.episode import EpisodeError, read_episode  # noqa: E402
+
+RUN = os.path.join(RUNS, "sweep", "ppo_seed0")
+EPISODES = os.path.join(RUN, "episodes")
+
+
+def f32(text):
+    """A number the C++ side printed from a float32, as that float32."""
+    return float(np.float32(float(text)))
+
+
+def plot(*args):
+    return subprocess.run([TENDRIL, "plot", *args], capture_output=True, text=True, timeout=120)
+
+
+class FigureTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        shutil.rmtree(OUT, ignore_errors=True)
+        os.makedirs(OUT)
+
+    def draw(self, name, *args):
+        out = os.path.join(OUT, name)
+        result = plot(*args, "--out", out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertTrue(os.path.isfile(out), out)
+        return out
+
+    def assert_picture(self, path, min_ink=0.01):
+        """A valid PNG (signature, IHDR with its CRC) whose pixels are not all one colour."""
+        with open(path, "rb") as f:
+            data = f.read()
+        self.assertEqual(data[:8], b"\x89PNG\r\n\x1a\n", path)
+        length, kind = struct.unpack(">I4s", data[8:16])
+        self.assertEqual(kind, b"IHDR")
+        width, height = struct.unpack(">II", data[16:24])
+        (crc,) = struct.unpack(">I", data[16 + length:20 + length])
+        self.assertEqual(zlib.crc32(data[12:16 + length]), crc, "IHDR checksum")
+        self.assertGreater(width, 300)
+        self.assertGreater(height, 200)
+        pixels = matplotlib.image.imread(path)[..., :3]
+        background = pixels[0, 0]
+        ink = np.mean(np.abs(pixels - background).sum(axis=2) > 0.15)
+        self.assertGreater(ink, min_ink, f"{path}: only {ink:.4f} of the pixels are drawn")
+        self.assertLess(ink, 0.9, f"{path}: {ink:.4f} of the pixels differ from the background")
+
+    def test_learning_curves_of_a_finished_run(self):
+        self.assert_picture(self.draw("run.png", "curves", RUN))
+        self.assert_picture(self.draw("run_eval.png", "curves", RUN, "--metric", "eval",
+                                      "--title", "evaluations"))
+        svg = self.draw("run.svg", "curves", RUN)
+        with open(svg) as f:
+            self.assertIn("<svg", f.read(2000))
+        pdf = self.draw("run.pdf", "curves", RUN)
+        with open(pdf, "rb") as f:
+            self.assertEqual(f.read(5), b"%PDF-")
+
+    def test_learning_curves_of_a_sweep_with_mean_and_spread(self):
+        self.assert_picture(self.draw("sweep.png", "curves", os.path.join(RUNS, "sweep"),
+                                      "--seeds", "--labels", "PPO on case 1"))
+        self.assert_picture(self.draw("sweep_eval.png", "curves", os.path.join(RUNS, "sweep"),
+                                      "--spread", "minmax", "--metric", "eval"))
+
+    def test_episode_snapshots(self):
+        recorded = sorted(f for f in os.listdir(EPISODES) if f.startswith("episode_"))
+        self.assertEqual(len(recorded), 1)
+        self.assert_picture(self.draw("episode.png", "episode", os.path.join(EPISODES, recorded[0])))
+        self.assert_picture(self.draw("primitives.png", "episode",
+                                      os.path.join(EPISODES, "all_primitives.tep"),
+                                      "--snapshots", "4"))
+
+    def test_columns_of_csv_files(self):
+        files = [os.path.join(RUNS, "sweep", f"ppo_seed{s}", "progress.csv") for s in range(3)]
+        self.assert_picture(self.draw("csv.png", "csv", *files, "--x", "time/total_timesteps",
+                                      "--y", "train/entropy_loss,train/value_loss",
+                                      "--kind", "scatter", "--logy", "symlog"))
+
+    def test_bad_input_is_named_and_writes_nothing(self):
+        out = os.path.join(OUT, "never.png")
+        result = plot("csv", os.path.join(RUN, "progress.csv"), "--x", "nope", "--y",
+                      "rollout/ep_rew_mean", "--out", out)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("has no column 'nope'", result.stderr)
+        result = plot("curves", os.path.join(RUNS, "missing"), "--out", out)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("neither a run directory", result.stderr)
+        result = plot("curves", RUN, "--out", os.path.join(OUT, "figure.jpeg"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn(".png, .svg or .pdf", result.stderr)
+        self.assertFalse(os.path.exists(out))
+
+
+class EpisodeReaderTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        os.makedirs(OUT, exist_ok=True)
+
+    def test_reads_what_the_cpp_reader_reads(self):
+        episode = read_episode(os.path.join(EPISODES, "all_primitives.tep"))
+        with open(os.path.join(EPISODES, "all_primitives.csv")) as f:
+            expected = list(csv.DictReader(f))
+        self.assertEqual(len(episode.frames), len(expected))
+        self.assertEqual(episode.metadata["env"], "every Scene primitive")
+        for frame, row in zip(episode.frames, expected):
+            self.assertEqual(frame["step"], int(row["step"]))
+            self.assertEqual(frame["time"], float(row["time"]))
+            self.assertEqual(frame["reward"], float(row["reward"]))
+            self.assertEqual(list(frame["rods"][0]["points"][-1]),
+                             [f32(row["tip_x"]), f32(row["tip_y"]), f32(row["tip_z"])])
+            self.assertEqual(frame["boxes"][0]["orientation"][0], f32(row["box_w"]))
+            self.assertEqual(frame["lattices"][0]["nodes"][0, 0], f32(row["lattice_x0"]))
+            self.assertEqual(frame["values"]["distance"], f32(row["distance"]))
+            for kind, count in (("rods", 1), ("spheres", 1), ("cylinders", 2), ("boxes", 1),
+                                ("planes", 1), ("lattices", 1), ("paths", 1)):
+                self.assertEqual(len(frame[kind]), count, kind)
+        self.assertTrue(episode.frames[0]["cylinders"][0]["capped"])
+        self.assertEqual(episode.frames[0]["lattices"][0]["springs"].shape, (13, 2))
+        self.assertAlmostEqual(episode.summary["episode_return"],
+                               sum(float(r["reward"]) for r in expected), places=9)
+
+    def test_damage_and_truncation_are_named(self):
+        with open(os.path.join(EPISODES, "all_primitives.tep"), "rb") as f:
+            data = bytearray(f.read())
+        cut = os.path.join(OUT, "cut.tep")
+        with open(cut, "wb") as f:
+            f.write(data[:len(data) // 2])
+        with self.assertRaisesRegex(EpisodeError, "ends inside a record"):
+            read_episode(cut)
+        partial = read_episode(cut, partial=True)
+        self.assertTrue(partial.truncated)
+        self.assertGreater(len(partial.frames), 10)
+        data[len(data) // 2] ^= 0x20
+        flipped = os.path.join(OUT, "flipped.tep")
+        with open(flipped, "wb") as f:
+            f.write(data)
+        with self.assertRaisesRegex(EpisodeError, "checksum mismatch"):
+            read_episode(flipped)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)

@@ -1,0 +1,71 @@
+// The server's JSON API (src/tendril/dashboard/server.hpp). Every call rejects with the
+// server's own message when it answers with an error.
+async function getJson(url) {
+  const response = await fetch(url, { cache: 'no-store' });
+  let body;
+  try {
+    body = await response.json();
+  } catch {
+    throw new Error(`${url}: ${response.status} ${response.statusText}`);
+  }
+  if (!response.ok) throw new Error(body.error || `${url}: ${response.status}`);
+  return body;
+}
+
+const q = encodeURIComponent;
+
+export const api = {
+  index: () => getJson('api/index'),
+  run: (path) => getJson(`api/run?path=${q(path)}`),
+  csv: (path, offset = 0) => getJson(`api/csv?path=${q(path)}&offset=${offset}`),
+  episode: (path, maxFrames = 2000) =>
+    getJson(`api/episode?path=${q(path)}&max_frames=${maxFrames}`),
+};
+
+// A CSV file followed while it grows: poll() fetches the rows past the last offset and returns
+// true when something changed. A file rewritten with other columns is read again from the start.
+export class LiveCsv {
+  constructor(path) {
+    this.path = path;
+    this.columns = [];
+    this.rows = [];
+    this.offset = 0;
+    this.problems = [];
+    this.missing = false;
+  }
+
+  async poll() {
+    let slice;
+    try {
+      slice = await api.csv(this.path, this.offset);
+    } catch (error) {
+      this.missing = true;
+      this.error = error.message;
+      return false;
+    }
+    this.missing = false;
+    const sameColumns =
+      slice.columns.length === this.columns.length &&
+      slice.columns.every((c, i) => c === this.columns[i]);
+    if (slice.restarted || !sameColumns) {
+      if (this.offset > 0 && !slice.restarted) {
+        this.offset = 0;  // the header changed under us: read everything again
+        return this.poll();
+      }
+      this.columns = slice.columns;
+      this.rows = [];
+      this.problems = [];
+    }
+    this.rows.push(...slice.rows);
+    this.problems.push(...slice.problems);
+    this.partial = slice.partial_line;
+    const changed = slice.rows.length > 0 || slice.restarted || !sameColumns;
+    this.offset = slice.next_offset;
+    return changed;
+  }
+
+  column(name) {
+    const index = this.columns.indexOf(name);
+    return index < 0 ? null : this.rows.map((row) => row[index]);
+  }
+}

@@ -1,0 +1,178 @@
+// The dashboard in a real browser: starts `tendril serve` on a directory of runs, opens every
+// view in Debian's headless Chromium (driven by playwright-core; no browser is downloaded),
+// checks that the charts and the 3D replay draw, that nothing logs an error, and writes one
+// screenshot per view.
+//   node browser_test.mjs --tendril build/apps/tendril --root RUNS --out SCREENSHOT_DIR
+//        [--run PATH] [--compare PATH,PATH,...] [--episode PATH] [--primitives PATH|none]
+import { spawn } from 'node:child_process';
+import { mkdirSync, statSync } from 'node:fs';
+import { join } from 'node:path';
+import { chromium } from 'playwright-core';
+
+const options = {
+  run: 'sweep/ppo_seed0',
+  compare: 'sweep/ppo_seed0,sweep/ppo_seed1,sweep/ppo_seed2',
+  episode: 'sweep/ppo_seed0/episodes/episode_0000.tep',
+  primitives: 'sweep/ppo_seed0/episodes/all_primitives.tep',
+  width: '1280',
+};
+for (let i = 2; i < process.argv.length; i += 2) options[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+for (const required of ['tendril', 'root', 'out']) {
+  if (!options[required]) throw new Error(`--${required} is required`);
+}
+mkdirSync(options.out, { recursive: true });
+
+let failures = 0;
+let passes = 0;
+function check(condition, what) {
+  if (condition) passes++;
+  else failures++;
+  console.log(`${condition ? 'ok  ' : 'FAIL'} ${what}`);
+}
+
+function startServer() {
+  return new Promise((resolve, reject) => {
+    const server = spawn(options.tendril, ['serve', options.root, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+    let output = '';
+    server.stdout.on('data', (chunk) => {
+      output += chunk;
+      const found = output.match(/http:\/\/127\.0\.0\.1:(\d+)\//);
+      if (found) resolve({ server, url: found[0] });
+    });
+    server.on('exit', (code) => reject(new Error(`tendril serve exited (${code}): ${output}`)));
+    setTimeout(() => reject(new Error('tendril serve did not start')), 10000);
+  });
+}
+
+// The fraction of a page's canvases' pixels (the largest of them) that differ from the
+// canvas's corner colour: 0 for a blank chart or scene.
+async function ink(page, selector) {
+  return page.evaluate((sel) => {
+    let best = 0;
+    for (const canvas of document.querySelectorAll(sel)) {
+      if (canvas.width === 0 || canvas.height === 0) continue;
+      const probe = document.createElement('canvas');
+      probe.width = canvas.width;
+      probe.height = canvas.height;
+      const context = probe.getContext('2d');
+      context.fillStyle = '#ffffff';
+      context.fillRect(0, 0, probe.width, probe.height);
+      context.drawImage(canvas, 0, 0);
+      const data = context.getImageData(0, 0, probe.width, probe.height).data;
+      const [r, g, b] = [data[0], data[1], data[2]];
+      let differing = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        if (Math.abs(data[i] - r) + Math.abs(data[i + 1] - g) + Math.abs(data[i + 2] - b) > 40) differing++;
+      }
+      best = Math.max(best, differing / (data.length / 4));
+    }
+    return best;
+  }, selector);
+}
+
+async function screenshot(page, name) {
+  const file = join(options.out, `${name}.png`);
+  await page.screenshot({ path: file });
+  check(statSync(file).size > 15000, `${name}.png is a picture (${statSync(file).size} bytes)`);
+}
+
+async function statusIsClean(page, view) {
+  const status = await page.$eval('#status', (el) => ({ text: el.textContent, error: el.classList.contains('error') }));
+  check(!status.error, `${view}: no error shown${status.error ? ` (${status.text})` : ''}`);
+}
+
+const { server, url } = await startServer();
+const browser = await chromium.launch({
+  executablePath: '/usr/bin/chromium',
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking',
+    '--disable-component-update', '--disable-sync', '--no-first-run', '--enable-unsafe-swiftshader'],
+});
+const errors = [];
+try {
+  const page = await browser.newPage({ viewport: { width: Number(options.width), height: 860 } });
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(message.text());
+  });
+  page.on('pageerror', (error) => errors.push(error.message));
+  page.on('requestfailed', (request) => errors.push(`request failed: ${request.url()}`));
+  page.on('request', (request) => {
+    if (!request.url().startsWith(url) && !request.url().startsWith('data:')) errors.push(`request outside the server: ${request.url()}`);
+  });
+
+  // Runs and sweeps.
+  await page.goto(url);
+  await page.waitForSelector('table.runs tbody tr td a');
+  const listed = await page.$$eval('table.runs tbody tr', (rows) => rows.length);
+  check(listed >= 3, `runs view lists the runs (${listed})`);
+  check((await page.$$('.sweep')).length >= 1, 'runs view lists the sweep');
+  await statusIsClean(page, 'runs');
+  await screenshot(page, 'runs');
+
+  // One run: curves, any logged value, config, episodes.
+  await page.goto(`${url}#/run?path=${encodeURIComponent(options.run)}`);
+  await page.waitForSelector('.uplot canvas');
+  await page.waitForTimeout(500);
+  const runInk = await ink(page, '.chart .uplot canvas');
+  check(runInk > 0.002, `run view draws its curves (${(100 * runInk).toFixed(2)}% of pixels)`);
+  const config = await page.$eval('pre.config', (el) => el.textContent);
+  check(config.includes('algorithm:'), 'run view shows config.yaml');
+  check((await page.$$('.uplot')).length >= 2, 'run view has the return chart and the any-value chart');
+  await statusIsClean(page, 'run');
+  await screenshot(page, 'run');
+
+  // Several runs: mean and spread over seeds.
+  const compare = options.compare.split(',');
+  await page.goto(`${url}#/compare?runs=${encodeURIComponent(compare.join('|'))}&group=1`);
+  await page.waitForSelector('.uplot canvas');
+  await page.waitForTimeout(500);
+  const compareInk = await ink(page, '.chart .uplot canvas');
+  check(compareInk > 0.002, `compare view draws mean and band (${(100 * compareInk).toFixed(2)}% of pixels)`);
+  const legend = await page.$eval('ul.groups', (el) => el.textContent);
+  check(legend.includes(`${compare.length} seeds`), `compare view groups the seeds (${legend.slice(0, 80)})`);
+  await statusIsClean(page, 'compare');
+  await screenshot(page, 'compare');
+
+  // The 3D replay: draws, plays, scrubs.
+  for (const [name, path] of [['replay', options.episode], ['replay_primitives', options.primitives]]) {
+    if (!path || path === 'none') continue;
+    await page.goto(`${url}#/episode?path=${encodeURIComponent(path)}`);
+    await page.waitForSelector('.viewport canvas');
+    await page.waitForTimeout(800);
+    const sceneInk = await ink(page, '.viewport canvas');
+    check(sceneInk > 0.01, `${name}: the 3D view draws the scene (${(100 * sceneInk).toFixed(2)}% of pixels)`);
+    const before = await page.$eval('input[type=range]', (el) => Number(el.value));
+    await page.selectOption('select[aria-label=speed]', '0.1');  // too slow to end while we watch
+    await page.click('button.play');
+    await page.waitForTimeout(1200);
+    const played = await page.$eval('input[type=range]', (el) => Number(el.value));
+    check(played > before, `${name}: play advances the frames (${before} → ${played})`);
+    check((await page.textContent('button.play')) === 'pause', `${name}: still playing at 0.1×`);
+    await page.click('button.play');  // pause
+    const target = await page.$eval('input[type=range]', (el) => {
+      el.value = String(Math.round(Number(el.max) * 0.6));
+      el.dispatchEvent(new Event('input'));
+      return Number(el.value);
+    });
+    const clock = await page.$eval('.clock', (el) => el.textContent);
+    const step = Number((clock.match(/step (\d+)/) || [])[1]);
+    check(/t = \d+\.\d+ s/.test(clock) && step > 0 && (await page.$eval('input[type=range]', (el) => Number(el.value))) === target,
+      `${name}: scrubbing to frame ${target} shows its time and step (${clock})`);
+    await page.selectOption('select[aria-label=speed]', '2');
+    const box = await page.$eval('.viewport canvas', (el) => { const r = el.getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; });
+    await page.mouse.move(box[0], box[1]);
+    await page.mouse.down();
+    await page.mouse.move(box[0] + 60, box[1] + 10, { steps: 5 });
+    await page.mouse.up();
+    await page.waitForTimeout(300);
+    const orbitInk = await ink(page, '.viewport canvas');
+    check(orbitInk > 0.01, `${name}: the scene still draws after orbiting the camera`);
+    await statusIsClean(page, name);
+    await screenshot(page, name);
+  }
+} finally {
+  await browser.close();
+  server.kill();
+}
+check(errors.length === 0, `no console errors${errors.length ? `: ${errors.join(' | ')}` : ''}`);
+console.log(`${passes} passed, ${failures} failed`);
+process.exit(failures === 0 ? 0 : 1);
