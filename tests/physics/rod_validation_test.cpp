@@ -41,6 +41,7 @@ TEST(RodValidation, EachInvalidParameterIsNamed) {
   EXPECT_TRUE(names(error_for([](RodSpec& s) { s.direction = Eigen::Vector3d(1, 1, 0); }), "direction"));
   EXPECT_TRUE(names(error_for([](RodSpec& s) { s.normal = s.direction; }), "normal"));
   EXPECT_TRUE(names(error_for([](RodSpec& s) { s.base_position.x() = kNaN; }), "base_position"));
+  EXPECT_TRUE(names(error_for([](RodSpec& s) { s.tip_mass = -0.01; }), "tip_mass"));
   EXPECT_EQ(error_for([](RodSpec&) {}), "accepted");
 }
 

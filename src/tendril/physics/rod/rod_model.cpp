@@ -42,6 +42,7 @@ RodModel RodModel::build(const RodSpec& spec) {
     m.node_masses[i] += 0.5 * element_mass;
     m.node_masses[i + 1] += 0.5 * element_mass;
   }
+  m.node_masses[n] += spec.tip_mass;
   m.inverse_node_masses = m.node_masses.cwiseInverse();
   m.inverse_inertia = m.inertia.cwiseInverse();
 

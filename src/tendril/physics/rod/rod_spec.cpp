@@ -41,6 +41,10 @@ void RodSpec::validate() const {
     throw Error("normal must be perpendicular to direction", "RodSpec");
   }
   if (!rest_curvature.allFinite()) throw Error("rest_curvature must be finite", "RodSpec");
+  if (!(std::isfinite(tip_mass) && tip_mass >= 0.0)) {
+    throw Error("tip_mass must be finite and non-negative, got " + std::to_string(tip_mass),
+                "RodSpec");
+  }
 }
 
 }  // namespace tendril::physics
