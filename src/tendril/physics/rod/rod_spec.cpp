@@ -34,6 +34,7 @@ void RodSpec::validate() const {
   require_positive(shear_modulus, "shear_modulus");
   require_positive(shear_coefficient, "shear_coefficient");
   require_positive(time_step, "time_step");
+  require_positive(rotary_inertia_scale, "rotary_inertia_scale");
   if (!base_position.allFinite()) throw Error("base_position must be finite", "RodSpec");
   require_unit(direction, "direction");
   require_unit(normal, "normal");
