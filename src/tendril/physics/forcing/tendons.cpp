@@ -10,15 +10,10 @@ namespace tendril::physics {
 
 namespace {
 
-// Row `row` of element i's directors (d1, d2 or d3 in the lab frame).
-Eigen::Vector3d director_row(const RodState& state, int row, int i) {
-  return Eigen::Vector3d(state.directors(3 * row, i), state.directors(3 * row + 1, i),
-                         state.directors(3 * row + 2, i));
-}
-
-// Q_iᵀ r for an offset r = (r1, r2, 0).
+// Q_iᵀ r for an offset r = (r1, r2, 0): r1 d1 + r2 d2 of element i (lab frame).
 Eigen::Vector3d lab_offset(const RodState& state, int i, const Eigen::Vector3d& offset) {
-  return offset.x() * director_row(state, 0, i) + offset.y() * director_row(state, 1, i);
+  const Eigen::Matrix3d q = state.director(i);
+  return offset.x() * q.row(0).transpose() + offset.y() * q.row(1).transpose();
 }
 
 }  // namespace
@@ -61,43 +56,71 @@ void Tendons::set_tension_law(int tendon, double tension_at_rest_length, double 
 }
 
 double Tendons::path_length(const RodState& state, int tendon) const {
-  const Eigen::Vector3d& r = offsets_[tendon];
-  double length = state.lengths.sum();
-  const Eigen::Index joints = state.curvatures.cols();
-  for (Eigen::Index j = 0; j < joints; ++j) {
-    // D̂_j (r × κ_j)·d3 (κ per rest length) is the joint's shortening on the side of r.
-    length -= joint_lengths_[j] * (r.x() * state.curvatures(1, j) - r.y() * state.curvatures(0, j));
+  // l = Σ l_i − (r × Σ_j D̂_j κ_j)·d3: the rod's length less the bending towards the tendon.
+  Eigen::Vector2d bend = Eigen::Vector2d::Zero();
+  for (Eigen::Index j = 0; j < state.curvatures.cols(); ++j) {
+    bend += joint_lengths_[j] * Eigen::Vector2d(state.curvatures(0, j), state.curvatures(1, j));
   }
-  return length;
+  const Eigen::Vector3d& r = offsets_[tendon];
+  return state.lengths.sum() - (r.x() * bend.y() - r.y() * bend.x());
 }
 
 void Tendons::add_loads(const RodModel& model, RodState& state) {
   const int n = model.n_elements;
+  // Σ_j D̂_j κ_j (material d1, d2 components) and the rod's length give every tendon's length.
+  double bend1 = 0.0, bend2 = 0.0;
+  const double* kappa1 = state.curvatures.row(0).data();
+  const double* kappa2 = state.curvatures.row(1).data();
+  const double* joint = joint_lengths_.data();
+  for (int j = 0; j + 1 < n; ++j) {
+    bend1 += joint[j] * kappa1[j];
+    bend2 += joint[j] * kappa2[j];
+  }
+  const double rod_length = state.lengths.sum();
+  // All tendons act through two resultants: the total compression Σ T_k and the couple arm
+  // Σ T_k r_k (material d1, d2 components; N·m).
+  double compression = 0.0, arm1 = 0.0, arm2 = 0.0;
   for (int k = 0; k < count(); ++k) {
-    const double length = path_length(state, k);
+    const Eigen::Vector3d& r = offsets_[k];
+    const double length = rod_length - (r.x() * bend2 - r.y() * bend1);
     const double tension =
         std::max(0.0, tensions_at_rest_[k] + stiffnesses_[k] * (length - rest_path_lengths_[k]));
     path_lengths_[k] = length;
     tensions_[k] = tension;
-    if (tension == 0.0) continue;
-    // Compression T along each element.
-    for (int i = 0; i < n; ++i) {
-      const Eigen::Vector3d push = tension * state.tangents.col(i);
-      state.external_forces.col(i) += push;
-      state.external_forces.col(i + 1) -= push;
-    }
-    // The couple T t̄ × r̄ across each joint, +C on the distal element, −C on the proximal one:
-    // it turns the distal element towards the tendon's side.
-    const Eigen::Vector3d& r = offsets_[k];
-    const double radius = r.norm();
-    for (int j = 0; j + 1 < n; ++j) {
-      Eigen::Vector3d offset = lab_offset(state, j, r) + lab_offset(state, j + 1, r);
-      offset *= radius / offset.norm();
-      const Eigen::Vector3d tangent =
-          (director_row(state, 2, j) + director_row(state, 2, j + 1)).normalized();
-      const Eigen::Vector3d couple = tension * tangent.cross(offset);
-      state.external_torques.col(j + 1) += state.director(j + 1) * couple;
-      state.external_torques.col(j) -= state.director(j) * couple;
+    compression += tension;
+    arm1 += tension * r.x();
+    arm2 += tension * r.y();
+  }
+  if (compression == 0.0) return;
+
+  // Compression Σ T along each element: +T t_i on node i, −T t_i on node i + 1.
+  for (int c = 0; c < 3; ++c) {
+    const double* t = state.tangents.row(c).data();
+    double* f = state.external_forces.row(c).data();
+    f[0] += compression * t[0];
+    for (int i = 1; i < n; ++i) f[i] += compression * (t[i] - t[i - 1]);
+    f[n] -= compression * t[n - 1];
+  }
+  if (arm1 == 0.0 && arm2 == 0.0) return;
+  // Across joint j: C = t̄ × (a1 ē1 + a2 ē2), with ē1, ē2, t̄ the unit means of the two elements'
+  // d1, d2, d3 (lab); +C (in element j + 1's frame) on j + 1, −C on j.
+  const double* q[9];
+  for (int row = 0; row < 9; ++row) q[row] = state.directors.row(row).data();
+  double* torque[3];
+  for (int c = 0; c < 3; ++c) torque[c] = state.external_torques.row(c).data();
+  for (int j = 0; j + 1 < n; ++j) {
+    Eigen::Vector3d e1(q[0][j] + q[0][j + 1], q[1][j] + q[1][j + 1], q[2][j] + q[2][j + 1]);
+    Eigen::Vector3d e2(q[3][j] + q[3][j + 1], q[4][j] + q[4][j + 1], q[5][j] + q[5][j + 1]);
+    Eigen::Vector3d t(q[6][j] + q[6][j + 1], q[7][j] + q[7][j + 1], q[8][j] + q[8][j + 1]);
+    const Eigen::Vector3d arm = arm1 / e1.norm() * e1 + arm2 / e2.norm() * e2;
+    const Eigen::Vector3d couple = t.cross(arm) / t.norm();
+    for (int side = 0; side < 2; ++side) {
+      const int i = j + side;
+      const double sign = side == 0 ? -1.0 : 1.0;
+      for (int row = 0; row < 3; ++row) {
+        torque[row][i] += sign * (q[3 * row][i] * couple.x() + q[3 * row + 1][i] * couple.y() +
+                                  q[3 * row + 2][i] * couple.z());
+      }
     }
   }
 }

@@ -19,8 +19,10 @@ namespace tendril::physics {
 // self-equilibrated pair, so the part applies exactly these section resultants as internal loads:
 //   - each element i is compressed by T: +T t_i on node i, −T t_i on node i + 1;
 //   - across each joint j (between elements j and j + 1) the couple C_j = T t̄_j × r̄_j acts on
-//     element j + 1 and −C_j on element j (lab frame, with r̄, t̄ the offset and tangent averaged
-//     over the joint's two elements and kept at their lengths |r| and 1).
+//     element j + 1 and −C_j on element j (lab frame; r̄ = r1 ē1 + r2 ē2 and t̄ with ē1, ē2, t̄ the
+//     unit means of the two elements' d1, d2, d3).
+// All tendons together act through two resultants, Σ T_k and Σ T_k r_k, so the cost of a step
+// does not grow with their number.
 // The moment is T |r| at every joint whatever the mesh, so a constant tension bends a straight,
 // unshearable rod to the constant curvature κ = T |r| ε³ / (E I) (ε the dilatation; the discrete
 // rod's bending couple is B κ / ε³) — the closed form of a tendon-driven continuum robot.
