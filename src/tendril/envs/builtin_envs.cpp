@@ -9,6 +9,7 @@
 #include "tendril/envs/elastica/unstructured_obstacles.hpp"
 #include "tendril/envs/identity/identity.hpp"
 #include "tendril/envs/identity/identity_box.hpp"
+#include "tendril/envs/sma_limb/sma_limb_env.hpp"
 
 namespace tendril::envs {
 
@@ -35,6 +36,10 @@ void register_builtin_envs(Registry& registry) {
   registry.add({"Elastica/UnstructuredObstacles-v0", &elastica::UnstructuredObstacles::create,
                 elastica::UnstructuredObstacles::kEpisodeSteps,
                 "soft arm reaches through a random nest of cylinders (case 4)"});
+  // The SMA limb of seed 001 as its software sees it (throttles in, bend readings out); no time
+  // limit: data collection runs for hours, tasks bring their own.
+  registry.add({sma_limb::SmaLimbEnv::kId, &sma_limb::SmaLimbEnv::create, std::nullopt,
+                "SMA-actuated silicone limb: throttles in, bend-sensor readings out (twin)"});
 }
 
 }  // namespace tendril::envs
