@@ -156,7 +156,9 @@ TEST(Collect, LogsEveryReadingWithWhatDroveItAndRepeatsWithTheSeed) {
   for (std::size_t k = 1; k < log.size(); ++k) {
     ASSERT_GT(log.time_s[k], log.time_s[k - 1]);
     // Throttles are held for ten readings at a time.
-    if (k % 10 != 0) ASSERT_EQ(log.throttles[k], log.throttles[k - 1]) << k;
+    if (k % 10 != 0) {
+      ASSERT_EQ(log.throttles[k], log.throttles[k - 1]) << k;
+    }
   }
   // The PWM is the table's for the throttles (the limb never reached the cut-off here).
   const LimbCalibration nominal = LimbCalibration::nominal("stiff");

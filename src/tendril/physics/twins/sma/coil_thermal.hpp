@@ -19,12 +19,12 @@ namespace tendril::physics {
 // the silicone's ≈ 57 s; most of the wire's heat flows into the silicone, as for a coil embedded
 // in it, and the silicone sheds it to the air and the mount. With them the twin's calibrated
 // input bounds land near the thesis' and hours of exploration keep the coils in their working
-// range (docs/results/sma_limb.md). 11.1 V on 7.4 Ω is ≈ 17 W at full duty, ≈ 2.5 W at the
+// range (docs/results/sma_limb.md). 11.1 V on 7.1 Ω is ≈ 17 W at full duty, ≈ 2.6 W at the
 // stiff limb's 15 %.
 struct CoilThermalSpec {
   double ambient_temperature = 22.0;  // T_a, °C
   double supply_voltage = 11.1;       // V, the thesis' supply
-  double resistance = 7.4;            // R, Ω
+  double resistance = 7.1;            // R, Ω
   double wire_capacity = 0.03;        // C_w, J/K
   double wire_to_ambient = 0.002;     // g_wa, W/K
   double wire_to_body = 0.018;        // g_wb, W/K

@@ -24,7 +24,7 @@ struct SmaCoilSpec {
   TransformationTemperatures transformation;
   double martensite_stiffness = 75.0;  // k_M, N/m
   double austenite_stiffness = 200.0;  // k_A, N/m
-  double memory_contraction = 0.042;   // δ, m
+  double memory_contraction = 0.038;   // δ, m
   double prestretch = 0.0;             // s₀, m
   double damage_temperature = 130.0;   // °C
   double damage_rate = 2.5e-4;         // 1/(K·s)

@@ -17,7 +17,12 @@ RodSpec rod_spec(const SmaLimbSpec& limb) {
   limb.validate();
   RodSpec spec;
   spec.n_elements = limb.n_elements;
-  spec.length = limb.length;
+  // The limb's first element is held in the mount (clamped), the other n − 1 make the free
+  // length: the bend between the clamp and the tip frame then spans exactly the free length at
+  // any resolution (a discrete rod bends only at its n − 1 joints).
+  const double element = limb.length / (limb.n_elements - 1);
+  spec.length = limb.length + element;
+  spec.base_position = Eigen::Vector3d(0.0, 0.0, limb.hanging ? element : -element);
   spec.radius = limb.radius;
   spec.density = limb.density;
   spec.youngs_modulus = limb.youngs_modulus;
@@ -107,8 +112,10 @@ void SmaLimb::describe(Scene& scene) const {
   scene.time = time();
   const RodState& state = rod_.state();
   scene.rods.push_back({"limb", Eigen::Matrix3Xd(state.positions), state.radii});
-  scene.boxes.push_back({"mount", Eigen::Vector3d(0.0, 0.0, spec_.hanging ? 0.005 : -0.005),
-                         Eigen::Vector3d(0.015, 0.015, 0.005), Eigen::Quaterniond::Identity()});
+  const double element = spec_.length / (spec_.n_elements - 1);  // held in the mount
+  scene.boxes.push_back({"mount", Eigen::Vector3d(0.0, 0.0, (spec_.hanging ? 0.5 : -0.5) * element),
+                         Eigen::Vector3d(0.015, 0.015, 0.5 * element),
+                         Eigen::Quaterniond::Identity()});
   for (int i = 0; i < SmaActuator::kCoils; ++i) {
     scene.paths.push_back({"sma_coil", actuator_->coil_path(state, i)});
   }

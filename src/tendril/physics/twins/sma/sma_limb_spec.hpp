@@ -10,14 +10,15 @@ namespace tendril::physics {
 // The thesis' SMA-actuated silicone limb (seed 001, Ch. 3): a cantilevered silicone cylinder
 // with four SMA coils at the cardinal directions and a two-axis bend sensor along its centre.
 // The thesis gives the materials and not the geometry; the geometry is ours (docs/results/
-// sma_limb.md): 100 mm long, 10 mm in diameter, coils 3.5 mm off the centreline, hanging from
-// its mount (z up; a 50 g load would buckle the soft limb standing upright). Two variants:
+// sma_limb.md): 100 mm long below its mount (which holds one more element), 10 mm in diameter,
+// coils 3.5 mm off the centreline, hanging from the mount (z up; a 50 g load would buckle the
+// soft limb standing upright). Two variants:
 //   stiff: Smooth-Sil 945, 40A, modulus 260 psi ≈ 1.79 MPa (the thesis' Limb 2, purple);
 //   soft:  Mold Star 30, 30A, modulus 96 psi ≈ 0.66 MPa (Limb 1, blue).
 // Silicone is nearly incompressible: G = E / 3.
 struct SmaLimbSpec {
   std::string name = "stiff";
-  double length = 0.10;            // m
+  double length = 0.10;            // m, free length below the mount
   double radius = 0.005;           // m
   double density = 1240.0;         // kg/m³
   double youngs_modulus = 1.79e6;  // Pa
