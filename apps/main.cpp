@@ -24,6 +24,9 @@ commands:
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.
+  collect <config.yaml> [--set key=value ...]
+      Calibrate the SMA limb, collect its data sets (written beside their prepared form),
+      replay open-loop throttles after cool-downs, or compare exploration with babbling.
   list-envs
       The registered environment ids.
   help
@@ -43,6 +46,9 @@ int main(int argc, char** argv) {
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
 #ifdef TENDRIL_WITH_ENVS
     if (args[0] == "list-envs") return tendril::apps::list_envs_command(rest);
+#ifdef TENDRIL_WITH_DATA
+    if (args[0] == "collect") return tendril::apps::collect_command(rest);
+#endif
 #endif
 #ifdef TENDRIL_WITH_RL
     if (args[0] == "train") return tendril::apps::train_command(rest);
