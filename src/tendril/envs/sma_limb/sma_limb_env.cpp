@@ -18,9 +18,10 @@ constexpr const char* kPwmKeys[4] = {"pwm_0", "pwm_1", "pwm_2", "pwm_3"};
 SmaLimbEnv::SmaLimbEnv(std::unique_ptr<LimbRobot> robot, LimbCalibration calibration, uint64_t seed)
     : robot_(std::move(robot)),
       calibration_(std::move(calibration)),
+      // Bends reach ±180°; a reading's zero offset may add to that.
       observation_space_(
-          Space::box(Eigen::Vector3f(-180.0f, -180.0f, 0.0f),
-                     Eigen::Vector3f(180.0f, 180.0f, std::numeric_limits<float>::infinity()))),
+          Space::box(Eigen::Vector3f(-360.0f, -360.0f, 0.0f),
+                     Eigen::Vector3f(360.0f, 360.0f, std::numeric_limits<float>::infinity()))),
       action_space_(
           Space::box(2, -static_cast<float>(kMaxThrottle), static_cast<float>(kMaxThrottle))),
       rng_(seed) {

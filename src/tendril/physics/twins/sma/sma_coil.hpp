@@ -18,7 +18,10 @@ namespace tendril::physics {
 //
 // Over-heating destroys the shape memory (seed 001, §4.2.1: "prolonged exposure to high current
 // can generate excessive heat ... the material ... unable to contract"): above damage_temperature
-// the degradation grows at damage_rate per kelvin of excess per second, and never heals.
+// the degradation grows at damage_rate per kelvin of excess per second, and never heals. The
+// default, 150 °C, lies above what bending to the 100° cut-off takes (the wire finishes
+// transforming at 125 °C): long holds at high duty that do not reach the cut-off — a loaded or
+// blocked limb — wear the coils, normal exploration does not.
 struct SmaCoilSpec {
   CoilThermalSpec thermal;
   TransformationTemperatures transformation;
@@ -26,7 +29,7 @@ struct SmaCoilSpec {
   double austenite_stiffness = 200.0;  // k_A, N/m
   double memory_contraction = 0.038;   // δ, m
   double prestretch = 0.0;             // s₀, m
-  double damage_temperature = 130.0;   // °C
+  double damage_temperature = 150.0;   // °C
   double damage_rate = 2.5e-4;         // 1/(K·s)
 
   void validate() const;

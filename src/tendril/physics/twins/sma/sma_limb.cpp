@@ -126,8 +126,10 @@ void SmaLimb::describe(Scene& scene) const {
     const std::string name = std::string("coil ") + kCoilRoles[i] + " ";
     scene.values.emplace_back(name + "pwm", actuator_->pwm()[i]);
     scene.values.emplace_back(name + "wire_temperature_C", coil(i).wire_temperature);
+    scene.values.emplace_back(name + "silicone_temperature_C", coil(i).body_temperature);
     scene.values.emplace_back(name + "martensite", coil(i).phase.martensite);
     scene.values.emplace_back(name + "tension_N", tension(i));
+    scene.values.emplace_back(name + "degradation", coil(i).degradation);
   }
 }
 
