@@ -157,6 +157,29 @@ TEST(SmaLimb, SnapshotsRestoreEverythingExactly) {
   EXPECT_NE(testing::error_message([&] { stiff.load_state(again); }), "no error");
 }
 
+// A rod stepped beyond its stability blows up: the limb then reports NaN readings, still on its
+// sensor's clock, and stops advancing the rod.
+TEST(SmaLimb, ABlownUpRodGivesNaNReadingsOnTime) {
+  physics::SmaLimbSpec spec = SmaLimbSpec::stiff();
+  spec.steps_per_millisecond = 1;
+  spec.rotary_inertia_scale = 1.0;
+  SmaLimb limb(spec, 1);
+  limb.set_pwm({30, 0, 0, 0});
+  int readings = 0;
+  while (limb.finite() && readings < 100) {
+    limb.next_reading();
+    ++readings;
+  }
+  ASSERT_FALSE(limb.finite()) << "1 ms steps must be unstable for this rod";
+  int64_t previous = limb.last_reading().time_ms;
+  for (int k = 0; k < 5; ++k) {
+    const BendReading reading = limb.next_reading();
+    EXPECT_TRUE(std::isnan(reading.angles_deg.x()));
+    EXPECT_GE(reading.time_ms - previous, 55);
+    previous = reading.time_ms;
+  }
+}
+
 TEST(SmaLimb, DescribesItsRodCoilsAndReadouts) {
   SmaLimb limb(SmaLimbSpec::stiff(), 1);
   hold(limb, {30, 0, 0, 0}, 1.5);

@@ -62,12 +62,8 @@ BendReading SmaLimb::next_reading() {
   const int64_t target = sensor_->next_sample_ms() * spec_.steps_per_millisecond;
   if (finite_) finite_ = rod_.advance(static_cast<int>(target - steps_));
   steps_ = target;
-  if (finite_) {
-    last_reading_ = sensor_->sample(rod_.state());
-  } else {
-    last_reading_.time_ms = sensor_->next_sample_ms();
-    last_reading_.angles_deg.setConstant(std::numeric_limits<double>::quiet_NaN());
-  }
+  last_reading_ = sensor_->sample(rod_.state());  // also draws the next reading's time
+  if (!finite_) last_reading_.angles_deg.setConstant(std::numeric_limits<double>::quiet_NaN());
   return last_reading_;
 }
 
