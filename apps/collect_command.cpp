@@ -12,6 +12,7 @@
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/scene.hpp"
 #include "tendril/data/limb_data_set.hpp"
 #include "tendril/data/prepare.hpp"
 #include "tendril/envs/registry.hpp"
@@ -127,15 +128,23 @@ int collect_data(const Config& config, const std::string& task) {
   const Stopwatch stopwatch;
   const LimbLog log = envs::sma_limb::collect(*env, *source, settings, seed);
   stopwatch.report(log.time_s.back());
-  for (double until : {window_s, log.time_s.back() + 1.0}) {
+  for (double until : {window_s, settings.duration_s}) {
     const auto grid = coverage(log, until);
     std::printf(
         "coverage of the 6x6 grid over +-100 deg, first %.0f s: %d of 36 cells, "
         "evenness %.3f\n",
-        std::min(until, log.time_s.back()), grid.visited_cells(), grid.evenness());
+        until, grid.visited_cells(), grid.evenness());
+    if (until >= settings.duration_s) break;
   }
   std::printf("%zu readings, %lld past the cut-off\n", log.size(),
               static_cast<long long>(log.cutoffs));
+  // What a simulated robot reports of itself at the end (coil temperatures, wear, ...).
+  Scene scene;
+  if (env->describe_scene(scene)) {
+    std::printf("the robot at the end:");
+    for (const auto& [name, value] : scene.values) std::printf(" %s %.4g;", name.c_str(), value);
+    std::printf("\n");
+  }
 
   data::Table table = log_table(log);
   table.set("robot", std::string(envs::sma_limb::SmaLimbEnv::kId) + ", the physics twin");
