@@ -21,11 +21,11 @@ namespace tendril::physics {
 //   - across each joint j (between elements j and j + 1) the couple C_j = T t̄_j × r̄_j acts on
 //     element j + 1 and −C_j on element j (lab frame; r̄ = r1 ē1 + r2 ē2 and t̄ with ē1, ē2, t̄ the
 //     unit means of the two elements' d1, d2, d3).
-// All tendons together act through two resultants, Σ T_k and Σ T_k r_k, so the cost of a step
-// does not grow with their number.
 // The moment is T |r| at every joint whatever the mesh, so a constant tension bends a straight,
 // unshearable rod to the constant curvature κ = T |r| ε³ / (E I) (ε the dilatation; the discrete
-// rod's bending couple is B κ / ε³) — the closed form of a tendon-driven continuum robot.
+// rod's bending couple is B κ / ε³) — the closed form of a tendon-driven continuum robot. All
+// tendons together act through two resultants, Σ T_k and Σ T_k r_k, so the cost of a step does
+// not grow with their number.
 //
 // The tension of tendon k follows the law T = max(0, T_k + K_k (l_k − l̂_k)) with l_k the tendon's
 // length now and l̂_k at attach time: a prescribed tension (K = 0) or an elastic tendon such as an
