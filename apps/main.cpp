@@ -45,6 +45,9 @@ commands:
       Figures without a browser (matplotlib): learning curves of runs and sweeps with mean and
       spread over seeds, snapshots of recorded episodes, any columns of CSV files.
       `tendril plot <kind> --help` lists each kind's options.
+  collect <config.yaml> [--set key=value ...]
+      Calibrate the SMA limb, collect its data sets (written beside their prepared form),
+      replay open-loop throttles after cool-downs, or compare exploration with babbling.
   list-envs
       The registered environment ids.
   help
@@ -74,6 +77,9 @@ int main(int argc, char** argv) {
 #endif
 #ifdef TENDRIL_WITH_DASHBOARD
     if (args[0] == "serve") return tendril::apps::serve_command(rest);
+#endif
+#ifdef TENDRIL_WITH_DATA
+    if (args[0] == "collect") return tendril::apps::collect_command(rest);
 #endif
 #ifdef TENDRIL_WITH_RL
     if (args[0] == "train") return tendril::apps::train_command(rest);

@@ -39,7 +39,8 @@ TEST(RodStatics, AxialStretchUnderEndForce) {
   const double expected = force * spec.length / (ea - force);
   const double elongation = rod.tip_position().x() - spec.length;
   EXPECT_NEAR(elongation, expected, 0.01 * expected);
-  EXPECT_NEAR(elongation, expected, 1e-6 * expected) << "uniform stretch is exact in the discrete model";
+  EXPECT_NEAR(elongation, expected, 1e-6 * expected)
+      << "uniform stretch is exact in the discrete model";
   // Volume conservation: r = r̂ / √e.
   const double dilatation = 1.0 + expected / spec.length;
   EXPECT_NEAR(rod.state().radii[5], spec.radius / std::sqrt(dilatation), 1e-8);
@@ -119,6 +120,42 @@ TEST(RodStatics, ElementForcesSplitBetweenNodes) {
   const double mass = rod.model().node_masses.sum();
   const double expected_speed = 4 * 2.0 / mass * rod.time();
   for (int j = 0; j <= 4; ++j) EXPECT_NEAR(rod.state().velocities(2, j), expected_speed, 1e-9);
+}
+
+// A point mass on the tip weighs on the rod exactly like an end force m g: a clamped cantilever
+// under gravity settles to the same shape either way; the tip node carries the extra mass.
+TEST(RodStatics, TipMassWeighsLikeAnEndForce) {
+  RodSpec spec;
+  spec.n_elements = 10;
+  spec.length = 0.5;
+  spec.radius = 0.02;
+  spec.youngs_modulus = 1.0e6;
+  spec.shear_modulus = spec.youngs_modulus / 3.0;
+  spec.direction = Eigen::Vector3d::UnitX();
+  spec.normal = Eigen::Vector3d::UnitZ();
+  spec.time_step = 1.0e-4;
+  const Eigen::Vector3d g(0.0, 0.0, -9.81);
+  const double tip_mass = 0.05;
+
+  RodSpec loaded_spec = spec;
+  loaded_spec.tip_mass = tip_mass;
+  Rod loaded(loaded_spec);
+  loaded.add<FixedEnd>();
+  loaded.add<Gravity>(g);
+  add_uniform_damping(loaded, 40.0);
+  Rod pushed(spec);
+  pushed.add<FixedEnd>();
+  pushed.add<Gravity>(g);
+  pushed.add<EndForces>(Eigen::Vector3d::Zero(), tip_mass * g);
+  add_uniform_damping(pushed, 40.0);
+  EXPECT_DOUBLE_EQ(loaded.model().node_masses[10], pushed.model().node_masses[10] + tip_mass);
+
+  ASSERT_TRUE(settle(loaded, 20.0, 1e-7));
+  ASSERT_TRUE(settle(pushed, 20.0, 1e-7));
+  const double sag = -pushed.tip_position().z();
+  ASSERT_GT(sag, 0.05) << "the load must bend the rod visibly";
+  EXPECT_NEAR(loaded.tip_position().z(), pushed.tip_position().z(), 1e-5 * sag);
+  EXPECT_NEAR(loaded.tip_position().x(), pushed.tip_position().x(), 1e-5 * sag);
 }
 
 }  // namespace

@@ -41,7 +41,21 @@ TEST(RodValidation, EachInvalidParameterIsNamed) {
   EXPECT_TRUE(names(error_for([](RodSpec& s) { s.direction = Eigen::Vector3d(1, 1, 0); }), "direction"));
   EXPECT_TRUE(names(error_for([](RodSpec& s) { s.normal = s.direction; }), "normal"));
   EXPECT_TRUE(names(error_for([](RodSpec& s) { s.base_position.x() = kNaN; }), "base_position"));
+  EXPECT_TRUE(names(error_for([](RodSpec& s) { s.tip_mass = -0.01; }), "tip_mass"));
+  EXPECT_TRUE(names(error_for([](RodSpec& s) { s.rotary_inertia_scale = 0.0; }),
+                    "rotary_inertia_scale"));
   EXPECT_EQ(error_for([](RodSpec&) {}), "accepted");
+}
+
+// The scale multiplies the elements' rotary inertia and nothing else.
+TEST(RodValidation, RotaryInertiaScaleMultipliesOnlyTheRotaryInertia) {
+  RodSpec spec;
+  Rod plain(spec);
+  spec.rotary_inertia_scale = 4.0;
+  Rod scaled(spec);
+  EXPECT_EQ(scaled.model().inertia, 4.0 * plain.model().inertia);
+  EXPECT_EQ(scaled.model().node_masses, plain.model().node_masses);
+  EXPECT_EQ(scaled.model().bend_stiffness, plain.model().bend_stiffness);
 }
 
 TEST(RodValidation, PartsThatDoNotFitAreRejected) {

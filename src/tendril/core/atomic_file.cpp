@@ -32,10 +32,9 @@ void sync_directory(const std::filesystem::path& directory) {
   ::close(fd);
 }
 
-}  // namespace
-
-void write_file_atomically(const std::filesystem::path& file, std::string_view bytes,
-                           std::string_view what) {
+// Writes `bytes` to a fresh temporary file beside `file`, flushed to disk; returns its path.
+std::filesystem::path write_temporary(const std::filesystem::path& file, std::string_view bytes,
+                                      std::string_view what) {
   const std::string where = file.string();
   const std::filesystem::path temporary =
       file.string() + ".tmp." + std::to_string(static_cast<long>(::getpid()));
@@ -54,11 +53,41 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
     throw;
   }
   ::close(fd);
+  return temporary;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& file, std::string_view bytes,
+                           std::string_view what) {
+  const std::string where = file.string();
+  const std::filesystem::path temporary = write_temporary(file, bytes, what);
   std::error_code error;
   std::filesystem::rename(temporary, file, error);
   if (error) {
     std::filesystem::remove(temporary);
     throw Error("cannot move " + std::string(what) + " into place: " + error.message(), where);
+  }
+  sync_directory(file.parent_path());
+}
+
+void write_new_file_atomically(const std::filesystem::path& file, std::string_view bytes,
+                               std::string_view what) {
+  const std::string where = file.string();
+  if (std::filesystem::exists(file)) {
+    throw Error(std::string(what) + " file already exists; not overwriting it", where);
+  }
+  const std::filesystem::path temporary = write_temporary(file, bytes, what);
+  // link() fails if `file` exists, so a file that appeared meanwhile is not replaced either.
+  const int linked = ::link(temporary.c_str(), file.c_str());
+  const int link_error = errno;
+  std::filesystem::remove(temporary);
+  if (linked != 0) {
+    throw Error(
+        link_error == EEXIST
+            ? std::string(what) + " file already exists; not overwriting it"
+            : "cannot move " + std::string(what) + " into place: " + std::strerror(link_error),
+        where);
   }
   sync_directory(file.parent_path());
 }

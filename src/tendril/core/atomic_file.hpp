@@ -12,4 +12,9 @@ namespace tendril {
 void write_file_atomically(const std::filesystem::path& file, std::string_view bytes,
                            std::string_view what);
 
+// Like write_file_atomically, but never replaces anything: raises Error naming `file` if it
+// already exists (also when it appears while writing — the final step is an exclusive link).
+void write_new_file_atomically(const std::filesystem::path& file, std::string_view bytes,
+                               std::string_view what);
+
 }  // namespace tendril

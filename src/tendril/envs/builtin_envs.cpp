@@ -11,6 +11,7 @@
 #include "tendril/envs/identity/identity_box.hpp"
 #include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_env.hpp"
+#include "tendril/envs/sma_limb/sma_limb_env.hpp"
 
 namespace tendril::envs {
 
@@ -46,6 +47,10 @@ void register_builtin_envs(Registry& registry) {
   registry.add({pneumatic::ReachEnv::kRobotId, &pneumatic::ReachEnv::create_on_robot,
                 pneumatic::ReachEnv::kEpisodeSteps,
                 "pneumatic arm reaches a goal behind a plate (task on the robot twin)"});
+  // The SMA limb of seed 001 as its software sees it (throttles in, bend readings out); no time
+  // limit: data collection runs for hours, tasks bring their own.
+  registry.add({sma_limb::SmaLimbEnv::kId, &sma_limb::SmaLimbEnv::create, std::nullopt,
+                "SMA-actuated silicone limb: throttles in, bend-sensor readings out (twin)"});
 }
 
 }  // namespace tendril::envs

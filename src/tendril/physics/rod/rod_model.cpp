@@ -37,11 +37,13 @@ RodModel RodModel::build(const RodSpec& spec) {
         spec.shear_coefficient * spec.shear_modulus * area, spec.youngs_modulus * area;
     element_bend.col(i) << spec.youngs_modulus * second_moments.x(),
         spec.youngs_modulus * second_moments.y(), spec.shear_modulus * second_moments.z();
-    m.inertia.col(i) = spec.density * m.rest_lengths[i] * second_moments;
+    m.inertia.col(i) =
+        spec.rotary_inertia_scale * spec.density * m.rest_lengths[i] * second_moments;
     const double element_mass = spec.density * area * m.rest_lengths[i];
     m.node_masses[i] += 0.5 * element_mass;
     m.node_masses[i + 1] += 0.5 * element_mass;
   }
+  m.node_masses[n] += spec.tip_mass;
   m.inverse_node_masses = m.node_masses.cwiseInverse();
   m.inverse_inertia = m.inertia.cwiseInverse();
 

@@ -34,6 +34,7 @@ void RodSpec::validate() const {
   require_positive(shear_modulus, "shear_modulus");
   require_positive(shear_coefficient, "shear_coefficient");
   require_positive(time_step, "time_step");
+  require_positive(rotary_inertia_scale, "rotary_inertia_scale");
   if (!base_position.allFinite()) throw Error("base_position must be finite", "RodSpec");
   require_unit(direction, "direction");
   require_unit(normal, "normal");
@@ -41,6 +42,10 @@ void RodSpec::validate() const {
     throw Error("normal must be perpendicular to direction", "RodSpec");
   }
   if (!rest_curvature.allFinite()) throw Error("rest_curvature must be finite", "RodSpec");
+  if (!(std::isfinite(tip_mass) && tip_mass >= 0.0)) {
+    throw Error("tip_mass must be finite and non-negative, got " + std::to_string(tip_mass),
+                "RodSpec");
+  }
 }
 
 }  // namespace tendril::physics

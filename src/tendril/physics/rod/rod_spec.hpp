@@ -23,6 +23,14 @@ struct RodSpec {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();        // d1 at rest, unit, ⊥ direction
   // Intrinsic curvature κ̂ (material frame, 1/m), the same on every Voronoi point.
   Eigen::Vector3d rest_curvature = Eigen::Vector3d::Zero();
+  // A point mass carried by the last node (a load fixed to the tip), kg; adds to that node's
+  // mass, hence to its inertia and, with Gravity, to its weight.
+  double tip_mass = 0.0;
+  // Factor on the elements' rotary inertia ρ l̂ I. Its fastest mode (shear against rotation,
+  // ω² ≈ 4 α_c G / (ρ r²), whatever the mesh) often bounds the explicit time step; the rotary
+  // inertia of a slender rod hardly affects its bending (a correction of order (r/L)²), so
+  // scaling it up is the usual way to afford a larger step. 1: the physical inertia.
+  double rotary_inertia_scale = 1.0;
   double time_step = 2.0e-4;  // s, fixed for the rod's lifetime (position Verlet)
 
   // Raises tendril::Error("<field> must be ...", "RodSpec") for the first invalid field.

@@ -1,0 +1,68 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tendril::data {
+
+// One column of a data file: its name, how it is written, and one line of documentation that
+// the file's header carries.
+struct ColumnSpec {
+  std::string name;
+  int decimals = 0;                // digits after the point; 0: an integer column
+  std::vector<std::string> words;  // non-empty: a text column holding one of these words
+  std::string description;         // units and meaning
+
+  bool is_text() const { return !words.empty(); }
+};
+
+// The layout of one kind of data file: a format tag with its version and the columns, in order.
+struct TableSchema {
+  std::string format;  // e.g. "tendril.sma_limb.data_set v1"
+  std::vector<ColumnSpec> columns;
+
+  int column(const std::string& name) const;  // index; Error if absent
+};
+
+// A data file in memory: free-form metadata and one row of values per record, in the schema's
+// column order (text columns hold the index of their word).
+struct Table {
+  std::vector<std::pair<std::string, std::string>> metadata;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> values;
+  // For a table read from a file, the file and the line each row came from (for error messages).
+  std::filesystem::path source;
+  std::vector<std::size_t> source_lines;
+
+  Eigen::Index rows() const { return values.rows(); }
+  // "<file>:<line>" of row r when read from a file, else "row r".
+  std::string where(Eigen::Index row) const;
+  // The value of a metadata key, or "" if absent; set replaces or appends.
+  std::string get(const std::string& key) const;
+  void set(const std::string& key, const std::string& value);
+};
+
+// The file format (CSV with a commented header, so that `pandas.read_csv(path, comment="#")` or
+// `numpy.genfromtxt(path, delimiter=",", names=True, comments="#", dtype=None)` reads it):
+//   # format: <schema.format>
+//   # column <name>: <description>          (one per column, in order)
+//   # <key>: <value>                        (the metadata, in order)
+//   <name>,<name>,...                       (the column header)
+//   <value>,<value>,...                     (one line per row, every line ending in '\n')
+// Numbers are written with the column's decimals (integers without a point), text columns as
+// their word.
+//
+// read_table is strict: the format line, the header and every field must be exactly as the
+// schema says, numbers finite and wholly parsed, integer columns integral, words known, and the
+// file must end with a line end (a file cut short is reported, not half-read). Every error is a
+// tendril::Error naming the file and line. write_table never replaces an existing file and
+// writes atomically (core/atomic_file.hpp); a value that the schema cannot represent (NaN, a
+// non-integral integer, an unknown word) is an Error naming the row and column.
+Table read_table(const std::filesystem::path& file, const TableSchema& schema);
+void write_table(const std::filesystem::path& file, const Table& table, const TableSchema& schema);
+// The text write_table writes.
+std::string format_table(const Table& table, const TableSchema& schema);
+
+}  // namespace tendril::data

@@ -1,0 +1,157 @@
+#include "tendril/envs/sma_limb/sma_limb_env.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "tendril/core/error.hpp"
+#include "tendril/core/info_keys.hpp"
+#include "tendril/envs/sma_limb/twin_limb_robot.hpp"
+
+namespace tendril::envs::sma_limb {
+
+namespace {
+
+constexpr const char* kPwmKeys[4] = {"pwm_0", "pwm_1", "pwm_2", "pwm_3"};
+
+}  // namespace
+
+SmaLimbEnv::SmaLimbEnv(std::unique_ptr<LimbRobot> robot, LimbCalibration calibration, uint64_t seed)
+    : robot_(std::move(robot)),
+      calibration_(std::move(calibration)),
+      // Bends reach ±180°; a reading's zero offset may add to that.
+      observation_space_(
+          Space::box(Eigen::Vector3f(-360.0f, -360.0f, 0.0f),
+                     Eigen::Vector3f(360.0f, 360.0f, std::numeric_limits<float>::infinity()))),
+      action_space_(
+          Space::box(2, -static_cast<float>(kMaxThrottle), static_cast<float>(kMaxThrottle))),
+      rng_(seed) {
+  require(robot_ != nullptr, "needs a robot", kId);
+  calibration_.validate(kId);
+  info_.set("time_s", 0.0);
+  info_.set("u_x", 0.0);
+  info_.set("u_y", 0.0);
+  for (const char* key : kPwmKeys) info_.set(key, 0.0);
+  info_.set("cutoff", 0.0);
+  info_.set(info_keys::kNan, 0.0);
+}
+
+std::unique_ptr<Env> SmaLimbEnv::create(const Config& params) {
+  const std::string limb = params.get_or<std::string>("limb", "stiff");
+  physics::SmaLimbSpec spec = physics::SmaLimbSpec::variant(limb);
+  spec.tip_mass = params.get_or<double>("tip_mass", 0.0);
+  const uint64_t seed = params.get_or<uint64_t>("seed", 0);
+  LimbCalibration calibration = LimbCalibration::nominal(limb);
+  if (params.has("calibration")) {
+    const std::string file = params.get<std::string>("calibration");
+    calibration = LimbCalibration::load(file);
+    if (calibration.limb != limb) {
+      throw Error("calibration was made on limb '" + calibration.limb + "', not '" + limb + "'",
+                  file);
+    }
+  }
+  spec.validate();
+  return std::make_unique<SmaLimbEnv>(std::make_unique<TwinLimbRobot>(spec), std::move(calibration),
+                                      seed);
+}
+
+Observation SmaLimbEnv::observe(const LimbSample& sample) {
+  time_s_ = sample.time_s;
+  angles_deg_ = sample.angles_deg - calibration_.zero_offset_deg;
+  return Eigen::Vector3f(static_cast<float>(angles_deg_.x()), static_cast<float>(angles_deg_.y()),
+                         static_cast<float>(time_s_));
+}
+
+Observation SmaLimbEnv::reset(std::optional<uint64_t> seed) {
+  if (seed) rng_ = Rng(*seed);
+  failed_ = false;
+  info_.set(info_keys::kNan, 0.0);
+  return observe(robot_->reset(rng_.next_u64()));
+}
+
+Step SmaLimbEnv::step(const Action& action) {
+  check_action(action_space_, action, kId);
+  Step result;
+  if (failed_) {
+    result.observation = observe({time_s_, angles_deg_ + calibration_.zero_offset_deg});
+    result.terminated = true;
+    result.info = info_;
+    return result;
+  }
+  const double ux = std::clamp<double>(std::lround(action[0]), -kMaxThrottle, kMaxThrottle);
+  const double uy = std::clamp<double>(std::lround(action[1]), -kMaxThrottle, kMaxThrottle);
+  // The firmware acts on the reading it has: beyond 100° on either axis every coil stays off.
+  const bool cutoff =
+      std::abs(angles_deg_.x()) >= kCutoffDeg || std::abs(angles_deg_.y()) >= kCutoffDeg;
+  const std::array<int, 4> pwm =
+      cutoff ? std::array<int, 4>{0, 0, 0, 0} : calibration_.pwm_for(ux, uy);
+  const LimbSample sample = robot_->command(pwm);
+  info_.set("u_x", ux);
+  info_.set("u_y", uy);
+  for (int coil = 0; coil < 4; ++coil) info_.set(kPwmKeys[coil], pwm[coil]);
+  info_.set("cutoff", cutoff ? 1.0 : 0.0);
+  if (!sample.angles_deg.allFinite()) {
+    failed_ = true;
+    time_s_ = sample.time_s;
+    result.observation = observe({time_s_, angles_deg_ + calibration_.zero_offset_deg});
+    result.terminated = true;
+    info_.set(info_keys::kNan, 1.0);
+  } else {
+    result.observation = observe(sample);
+  }
+  info_.set("time_s", time_s_);
+  result.info = info_;
+  return result;
+}
+
+void SmaLimbEnv::save_state(SnapshotWriter& out) const {
+  out.section(kId);
+  robot_->save_state(out);
+  out.put(rng_);
+  out.put_matrix(angles_deg_);
+  out.put(time_s_);
+  out.put(failed_);
+  for (const auto& entry : info_.entries()) out.put(entry.second);
+}
+
+void SmaLimbEnv::load_state(SnapshotReader& in) {
+  in.section(kId);
+  Snapshot before;
+  SnapshotWriter writer(before);
+  robot_->save_state(writer);
+  robot_->load_state(in);
+  try {
+    Rng rng = rng_;
+    in.get(rng);
+    Eigen::Vector2d angles = angles_deg_;
+    in.get_matrix(angles);
+    const double time = in.get_double();
+    const bool failed = in.get_bool();
+    Info info = info_;
+    for (const auto& entry : info_.entries()) info.set(entry.first, in.get_double());
+    rng_ = rng;
+    angles_deg_ = angles;
+    time_s_ = time;
+    failed_ = failed;
+    info_ = std::move(info);
+  } catch (...) {
+    SnapshotReader restore(before);
+    robot_->load_state(restore);
+    throw;
+  }
+}
+
+bool SmaLimbEnv::describe_scene(Scene& scene) const {
+  if (!robot_->describe_scene(scene)) return false;
+  scene.time = time_s_;
+  scene.values.emplace_back("reading theta_x_deg", angles_deg_.x());
+  scene.values.emplace_back("reading theta_y_deg", angles_deg_.y());
+  return true;
+}
+
+void SmaLimbEnv::apply_push(const Eigen::Vector2d& force_n, double duration_s) {
+  require(force_n.allFinite() && std::isfinite(duration_s) && duration_s >= 0.0,
+          "push force and duration must be finite, duration >= 0", kId);
+  robot_->push(force_n, duration_s);
+}
+
+}  // namespace tendril::envs::sma_limb

@@ -1,0 +1,158 @@
+// SmaLimb/Robot-v0: the robot as the thesis' software saw it.
+#include "tendril/envs/sma_limb/sma_limb_env.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "support/error_message.hpp"
+#include "support/scratch_directory.hpp"
+#include "tendril/envs/registry.hpp"
+#include "tendril/envs/sma_limb/twin_limb_robot.hpp"
+
+namespace tendril::envs::sma_limb {
+namespace {
+
+using tendril::testing::error_message;
+
+Action throttles(double ux, double uy) {
+  Action action(2);
+  action << static_cast<float>(ux), static_cast<float>(uy);
+  return action;
+}
+
+// The stiff limb with its true zero offsets as calibration, so readings start near 0.
+SmaLimbEnv calibrated_stiff_env(uint64_t seed) {
+  const physics::SmaLimbSpec spec = physics::SmaLimbSpec::stiff();
+  LimbCalibration calibration = LimbCalibration::nominal("stiff");
+  calibration.zero_offset_deg = spec.sensor.zero_offset;
+  return SmaLimbEnv(std::make_unique<TwinLimbRobot>(spec), calibration, seed);
+}
+
+TEST(SmaLimbEnv, ObservesReadingsWithoutOffsetsAndTheirTimeStamps) {
+  SmaLimbEnv env = calibrated_stiff_env(1);
+  const Observation first = env.reset(3);
+  ASSERT_EQ(first.size(), 3);
+  EXPECT_LE(std::abs(first[0]), 0.5f);
+  EXPECT_LE(std::abs(first[1]), 0.5f);
+  EXPECT_EQ(first[2], 0.0f);
+  double previous = 0.0;
+  for (int k = 0; k < 40; ++k) {
+    const Step step = env.step(throttles(0, 0));
+    const double time = *step.info.get("time_s");
+    EXPECT_GE(time - previous, 0.055 - 1e-12);
+    EXPECT_LE(time - previous, 0.075 + 1e-12);
+    EXPECT_FLOAT_EQ(step.observation[2], static_cast<float>(time));
+    EXPECT_LE(std::abs(step.observation[0]), 0.5f + 1e-4f);
+    EXPECT_EQ(step.reward, 0.0);
+    EXPECT_FALSE(step.terminated || step.truncated);
+    previous = time;
+  }
+}
+
+// Throttles go through the calibrated table: nominal stiff bounds 18 / 38 → u = 1 ↦ 18,
+// u = −5 ↦ round(18 + 4 · 20 / 9) = 27, u = 10 ↦ 38; fractional throttles are rounded and
+// out-of-range ones saturate at the table's end, as in the firmware.
+TEST(SmaLimbEnv, MapsThrottlesToPwmThroughTheTable) {
+  SmaLimbEnv env = calibrated_stiff_env(1);
+  env.reset(1);
+  Step step = env.step(throttles(1, -5));
+  EXPECT_EQ(*step.info.get("pwm_0"), 18);
+  EXPECT_EQ(*step.info.get("pwm_1"), 0);
+  EXPECT_EQ(*step.info.get("pwm_2"), 0);
+  EXPECT_EQ(*step.info.get("pwm_3"), 27);
+  EXPECT_EQ(*step.info.get("u_x"), 1);
+  EXPECT_EQ(*step.info.get("u_y"), -5);
+  step = env.step(throttles(-9.7, 0.3));
+  EXPECT_EQ(*step.info.get("u_x"), -10);
+  EXPECT_EQ(*step.info.get("pwm_1"), 38);
+  EXPECT_EQ(*step.info.get("u_y"), 0);
+  EXPECT_EQ(*step.info.get("pwm_2") + *step.info.get("pwm_3"), 0);
+  EXPECT_NE(error_message([&] { env.step(Action::Zero(3)); }), "no error");
+  EXPECT_NE(error_message([&] { env.step(throttles(NAN, 0)); }), "no error");
+}
+
+// Full throttle bends the limb past 100°; from the first reading beyond it the firmware keeps
+// every coil off until the reading is back inside.
+TEST(SmaLimbEnv, TheFirmwareCutsAllCoilsOffBeyond100Degrees) {
+  SmaLimbEnv env = calibrated_stiff_env(1);
+  env.reset(1);
+  Observation observation;
+  int steps = 0;
+  do {
+    const Step step = env.step(throttles(10, 0));
+    observation = step.observation;
+    ASSERT_EQ(*step.info.get("cutoff"), 0.0);
+    ASSERT_LT(++steps, 200) << "never reached 100°";
+  } while (observation[0] < 100.0f);
+  const Step cut = env.step(throttles(10, 10));
+  EXPECT_EQ(*cut.info.get("cutoff"), 1.0);
+  for (const char* key : {"pwm_0", "pwm_1", "pwm_2", "pwm_3"}) EXPECT_EQ(*cut.info.get(key), 0);
+  int cut_steps = 1;
+  Step step = cut;
+  while (step.observation[0] >= 100.0f || std::abs(step.observation[1]) >= 100.0f) {
+    step = env.step(throttles(10, 10));
+    EXPECT_EQ(*step.info.get("pwm_0"), 0);
+    ASSERT_LT(++cut_steps, 300);
+  }
+  step = env.step(throttles(10, 10));
+  EXPECT_EQ(*step.info.get("cutoff"), 0.0);
+  EXPECT_GT(*step.info.get("pwm_0"), 0);
+}
+
+TEST(SmaLimbEnv, TheSameSeedRepeatsAndAnotherDiffers) {
+  auto run = [](uint64_t seed) {
+    SmaLimbEnv env = calibrated_stiff_env(0);
+    std::vector<Observation> observations{env.reset(seed)};
+    for (int k = 0; k < 60; ++k) observations.push_back(env.step(throttles(k % 7, -3)).observation);
+    return observations;
+  };
+  EXPECT_EQ(run(5), run(5));
+  EXPECT_NE(run(5), run(6));
+}
+
+class SmaLimbEnvParams : public tendril::testing::ScratchDirectoryTest {
+ protected:
+  SmaLimbEnvParams() : ScratchDirectoryTest("sma_limb_env") {}
+};
+
+TEST_F(SmaLimbEnvParams, AreReadFromTheConfigAndCheckedAgainstTheCalibration) {
+  auto env = make("SmaLimb/Robot-v0", Config::parse("limb: soft\nseed: 4\ntip_mass: 0.01\n"));
+  EXPECT_EQ(env->action_space().size(), 2);
+  const auto* limb_env = dynamic_cast<const SmaLimbEnv*>(env.get());
+  ASSERT_NE(limb_env, nullptr) << "no time limit wraps the robot";
+  EXPECT_EQ(limb_env->calibration().upper_pwm[0], LimbCalibration::nominal("soft").upper_pwm[0]);
+
+  LimbCalibration stiff = LimbCalibration::nominal("stiff");
+  stiff.save(directory_ / "stiff.yaml");
+  const std::string mismatch = error_message([&] {
+    make("SmaLimb/Robot-v0",
+         Config::parse("limb: soft\ncalibration: " + (directory_ / "stiff.yaml").string()));
+  });
+  EXPECT_NE(mismatch.find("stiff.yaml"), std::string::npos) << mismatch;
+  EXPECT_NE(error_message([] {
+              make("SmaLimb/Robot-v0", Config::parse("limb: rubber\n"));
+            }).find("rubber"),
+            std::string::npos);
+  EXPECT_NE(
+      error_message([] { make("SmaLimb/Robot-v0", Config::parse("load_g: 50\n")); }).find("load_g"),
+      std::string::npos);
+}
+
+TEST(SmaLimbEnv, DescribesItsSceneAndCanBePushed) {
+  SmaLimbEnv env = calibrated_stiff_env(1);
+  env.reset(1);
+  env.apply_push(Eigen::Vector2d(0.0, 0.03), 0.3);
+  Observation observation;
+  for (int k = 0; k < 4; ++k) observation = env.step(throttles(0, 0)).observation;
+  EXPECT_GT(observation[1], 3.0f);
+  Scene scene;
+  ASSERT_TRUE(env.describe_scene(scene));
+  EXPECT_EQ(scene.rods.size(), 1u);
+  EXPECT_EQ(scene.paths.size(), 4u);
+  EXPECT_NEAR(scene.time, static_cast<double>(observation[2]), 1e-4);
+}
+
+}  // namespace
+}  // namespace tendril::envs::sma_limb
