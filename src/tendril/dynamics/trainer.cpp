@@ -29,6 +29,13 @@ std::string duration_text(double seconds) {
   return text;
 }
 
+std::string best_text(const TrainingReport& report) {
+  if (std::isnan(report.best_validation_loss)) return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", report.best_validation_loss);
+  return text;
+}
+
 void shuffle(std::vector<int64_t>& values, Rng& rng) {
   for (std::size_t i = values.size(); i > 1; --i) {
     std::swap(values[i - 1], values[rng.below(i)]);
@@ -158,10 +165,10 @@ TrainingReport train_model(Model& model, const WindowSet& windows, const Trainin
         const double rate = static_cast<double>(trained) / elapsed;
         const double total = static_cast<double>(per_epoch) * options.epochs;
         std::fprintf(stderr,
-                     "\repoch %d/%d  batch %lld/%lld  loss %.4g  best val %.4g  %.0f windows/s  "
+                     "\repoch %d/%d  batch %lld/%lld  loss %.4g  best val %s  %.0f windows/s  "
                      "ETA %s   ",
                      epoch + 1, options.epochs, static_cast<long long>(b + 1),
-                     static_cast<long long>(batches_per_epoch), value, report.best_validation_loss,
+                     static_cast<long long>(batches_per_epoch), value, best_text(report).c_str(),
                      rate, duration_text((total - static_cast<double>(trained)) / rate).c_str());
         std::fflush(stderr);
       }
