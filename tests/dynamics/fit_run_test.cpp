@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
@@ -93,6 +94,22 @@ TEST_F(FitRun, FineTuningStartsFromTheLoadedWeights) {
   // A model trained from scratch with that seed starts elsewhere.
   const Model fresh(a->description(), 99);
   EXPECT_FALSE(torch::equal(const_cast<Model&>(fresh).network().parameters()[0], pa[0]));
+}
+
+TEST_F(FitRun, SameConfigAndSeedGiveTheSameModelFile) {
+  auto bytes = [](const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const FitExperiment experiment = FitExperiment::from_config(config(kSmallLstm));
+  run_fit(experiment, directory_ / "a", true);
+  run_fit(experiment, directory_ / "b", true);
+  EXPECT_EQ(bytes(directory_ / "a" / "model.tdm"), bytes(directory_ / "b" / "model.tdm"));
+  EXPECT_EQ(bytes(directory_ / "a" / "evaluation.csv"), bytes(directory_ / "b" / "evaluation.csv"));
+  Config other_seed = config(kSmallLstm);
+  other_seed.set("seed", "5");
+  run_fit(FitExperiment::from_config(other_seed), directory_ / "c", true);
+  EXPECT_NE(bytes(directory_ / "a" / "model.tdm"), bytes(directory_ / "c" / "model.tdm"));
 }
 
 TEST_F(FitRun, ConfigErrorsNameTheKey) {
