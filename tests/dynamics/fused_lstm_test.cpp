@@ -70,5 +70,21 @@ TEST(FusedLstm, ZeroInitialStatesAndUnusedOutputs) {
   EXPECT_TRUE(torch::allclose(fused_grad, x.grad(), 1e-5, 1e-6));
 }
 
+// Without gradients (evaluation, prediction) the pass keeps only what the next step needs and
+// computes the same numbers.
+TEST(FusedLstm, ForwardWithoutGradientsIsTheSame) {
+  torch::manual_seed(5);
+  torch::nn::LSTM lstm(torch::nn::LSTMOptions(3, 4).num_layers(2).batch_first(true));
+  const torch::Tensor input = torch::randn({3, 6, 3});
+  const auto [out, h_n, c_n] = fused_lstm(lstm, input);
+  ASSERT_TRUE(out.requires_grad());
+  torch::NoGradGuard no_grad;
+  const auto [plain_out, plain_h, plain_c] = fused_lstm(lstm, input);
+  EXPECT_FALSE(plain_out.requires_grad());
+  EXPECT_TRUE(torch::equal(out.detach(), plain_out));
+  EXPECT_TRUE(torch::equal(h_n.detach(), plain_h));
+  EXPECT_TRUE(torch::equal(c_n.detach(), plain_c));
+}
+
 }  // namespace
 }  // namespace tendril::dynamics

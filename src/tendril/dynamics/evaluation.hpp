@@ -32,7 +32,7 @@ struct ErrorReport {
 // One-step prediction (eq. 4.11): x̂_{t+1} = x_t + φ(recorded window ending at t), for every
 // window of `split`.
 ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split,
-                            int batch_size = 4096);
+                            int batch_size = 256);
 
 // Recursive rollouts (eq. 4.12): from a recorded window, x̂_{t+1} = x̂_t + φ(x̂_t, …, u_t) with
 // the predictions fed back and the recorded inputs applied. Each segment of `split` is cut into

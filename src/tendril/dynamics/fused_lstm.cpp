@@ -1,6 +1,7 @@
 #include "tendril/dynamics/fused_lstm.hpp"
 
 #include <Eigen/Core>
+#include <algorithm>
 
 #include "tendril/core/error.hpp"
 
@@ -52,51 +53,66 @@ void cell_backward(const Tensor& activations, const Tensor& c_previous, const Te
   d_c = dct * f;
 }
 
+// Every step's activations, cell states and outputs per layer, for the backward pass.
+struct SavedSteps {
+  std::vector<Tensor> inputs, activations, cells, tanh_cells, hidden;
+};
+
+// The forward pass through the stack: outputs [B, T, H], h_n, c_n. With `saved`, keeps what the
+// backward pass needs; without (no gradient wanted), only two cell states per layer.
+variable_list forward_pass(const Tensor& input, const Tensor& h0, const Tensor& c0,
+                           torch::TensorList weights, SavedSteps* saved) {
+  const int64_t layers = static_cast<int64_t>(weights.size()) / 4;
+  const int64_t batch = input.size(0), steps = input.size(1), h = weights[1].size(1);
+  Tensor layer_input = input.transpose(0, 1).contiguous();  // [T, B, F]
+  std::vector<Tensor> h_n, c_n;
+  for (int64_t l = 0; l < layers; ++l) {
+    const Tensor bias = weights[4 * l + 2] + weights[4 * l + 3];
+    // The input projections of all steps at once; each step then adds W_hh h_{t−1}.
+    Tensor activations =
+        torch::addmm(bias, layer_input.view({steps * batch, -1}), weights[4 * l].t())
+            .view({steps, batch, 4 * h});
+    const int64_t kept = saved ? steps : 2;
+    Tensor cells = torch::empty({kept, batch, h});
+    Tensor tanh_cells = torch::empty({kept, batch, h});
+    Tensor hidden = torch::empty({steps, batch, h});
+    const Tensor w_hh_t = weights[4 * l + 1].t();
+    for (int64_t t = 0; t < steps; ++t) {
+      Tensor gates = activations[t];
+      gates.addmm_(t > 0 ? hidden[t - 1] : h0[l], w_hh_t);
+      const Tensor c_previous = t > 0 ? cells[(t - 1) % kept] : c0[l];
+      cell_forward(gates, c_previous, cells[t % kept], tanh_cells[t % kept], hidden[t], batch, h);
+    }
+    h_n.push_back(hidden[steps - 1]);
+    c_n.push_back(cells[(steps - 1) % kept]);
+    if (saved) {
+      saved->inputs.push_back(layer_input);
+      saved->activations.push_back(activations);
+      saved->cells.push_back(cells);
+      saved->tanh_cells.push_back(tanh_cells);
+      saved->hidden.push_back(hidden);
+    }
+    layer_input = hidden;
+  }
+  return {layer_input.transpose(0, 1).contiguous(), torch::stack(h_n), torch::stack(c_n)};
+}
+
 class FusedLstm : public torch::autograd::Function<FusedLstm> {
  public:
   // weights: w_ih, w_hh, b_ih, b_hh per layer.
   static variable_list forward(AutogradContext* ctx, Tensor input, Tensor h0, Tensor c0,
                                torch::TensorList weights) {
-    const int64_t layers = static_cast<int64_t>(weights.size()) / 4;
-    const int64_t batch = input.size(0), steps = input.size(1), h = weights[1].size(1);
-    Tensor layer_input = input.transpose(0, 1).contiguous();  // [T, B, F]
-    std::vector<Tensor> saved_inputs, saved_activations, saved_cells, saved_tanh, saved_hidden;
-    std::vector<Tensor> h_n, c_n;
-    for (int64_t l = 0; l < layers; ++l) {
-      const Tensor& w_ih = weights[4 * l];
-      const Tensor& w_hh = weights[4 * l + 1];
-      const Tensor bias = weights[4 * l + 2] + weights[4 * l + 3];
-      Tensor activations = torch::addmm(bias, layer_input.view({steps * batch, -1}), w_ih.t())
-                               .view({steps, batch, 4 * h});
-      Tensor cells = torch::empty({steps, batch, h});
-      Tensor tanh_cells = torch::empty({steps, batch, h});
-      Tensor hidden = torch::empty({steps, batch, h});
-      const Tensor w_hh_t = w_hh.t();
-      for (int64_t t = 0; t < steps; ++t) {
-        Tensor gates = activations[t];
-        const Tensor h_previous = t > 0 ? hidden[t - 1] : h0[l];
-        const Tensor c_previous = t > 0 ? cells[t - 1] : c0[l];
-        gates.addmm_(h_previous, w_hh_t);
-        cell_forward(gates, c_previous, cells[t], tanh_cells[t], hidden[t], batch, h);
-      }
-      saved_inputs.push_back(layer_input);
-      saved_activations.push_back(activations);
-      saved_cells.push_back(cells);
-      saved_tanh.push_back(tanh_cells);
-      saved_hidden.push_back(hidden);
-      h_n.push_back(hidden[steps - 1]);
-      c_n.push_back(cells[steps - 1]);
-      layer_input = hidden;
-    }
+    SavedSteps saved;
+    variable_list outputs = forward_pass(input, h0, c0, weights, &saved);
     ctx->save_for_backward(weights.vec());
     ctx->saved_data["h0"] = h0;
     ctx->saved_data["c0"] = c0;
-    ctx->saved_data["inputs"] = saved_inputs;
-    ctx->saved_data["activations"] = saved_activations;
-    ctx->saved_data["cells"] = saved_cells;
-    ctx->saved_data["tanh"] = saved_tanh;
-    ctx->saved_data["hidden"] = saved_hidden;
-    return {layer_input.transpose(0, 1).contiguous(), torch::stack(h_n), torch::stack(c_n)};
+    ctx->saved_data["inputs"] = saved.inputs;
+    ctx->saved_data["activations"] = saved.activations;
+    ctx->saved_data["cells"] = saved.cells;
+    ctx->saved_data["tanh"] = saved.tanh_cells;
+    ctx->saved_data["hidden"] = saved.hidden;
+    return outputs;
   }
 
   static variable_list backward(AutogradContext* ctx, variable_list grads) {
@@ -165,10 +181,21 @@ std::tuple<Tensor, Tensor, Tensor> fused_lstm(const torch::nn::LSTM& lstm, const
   const int64_t batch = input.size(0);
   const Tensor zeros = torch::zeros({layers, batch, h});
   const std::vector<Tensor> weights = lstm->all_weights();
+  const Tensor x = input.contiguous();
+  const Tensor h_start = h0.defined() ? h0.contiguous() : zeros;
+  const Tensor c_start = c0.defined() ? c0.contiguous() : zeros;
+  const bool wants_gradient =
+      torch::GradMode::is_enabled() &&
+      (x.requires_grad() || h_start.requires_grad() || c_start.requires_grad() ||
+       std::any_of(weights.begin(), weights.end(),
+                   [](const Tensor& w) { return w.requires_grad(); }));
+  if (!wants_gradient) {
+    torch::NoGradGuard no_grad;
+    const variable_list out = forward_pass(x, h_start, c_start, weights, nullptr);
+    return {out[0], out[1], out[2]};
+  }
   // A TensorList (not a vector) makes every weight an input of the autograd node.
-  const variable_list out =
-      FusedLstm::apply(input.contiguous(), h0.defined() ? h0.contiguous() : zeros,
-                       c0.defined() ? c0.contiguous() : zeros, torch::TensorList(weights));
+  const variable_list out = FusedLstm::apply(x, h_start, c_start, torch::TensorList(weights));
   return {out[0], out[1], out[2]};
 }
 

@@ -180,7 +180,7 @@ TrainingReport train_model(Model& model, const WindowSet& windows, const Trainin
     epoch_report.windows = trained;
     epoch_report.validation_loss = std::numeric_limits<double>::quiet_NaN();
     if (!validation.empty()) {
-      epoch_report.validation_loss = mean_loss(model, windows, validation, 4 * options.batch_size);
+      epoch_report.validation_loss = mean_loss(model, windows, validation, options.batch_size);
       if (!(epoch_report.validation_loss >= report.best_validation_loss)) {
         report.best_validation_loss = epoch_report.validation_loss;
         report.best_epoch = epoch + 1;
