@@ -1,5 +1,7 @@
 #include "tendril/dynamics/model.hpp"
 
+#include <cmath>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::dynamics {
@@ -24,13 +26,10 @@ Model::Model(ModelDescription description, uint64_t seed) : description_(std::mo
   Rng rng(seed, 0);
   network_->initialize(rng);
   network_->set_noise(Rng(seed, 1));
-  row_offset_ = torch::tensor(std::vector<double>(description_.normalizer.offset.data(),
-                                                  description_.normalizer.offset.data() +
-                                                      description_.normalizer.size()))
+  const Normalizer& n = description_.normalizer;
+  row_offset_ = torch::from_blob(const_cast<double*>(n.offset.data()), {n.size()}, torch::kDouble)
                     .to(torch::kFloat);
-  row_scale_ = torch::tensor(std::vector<double>(description_.normalizer.scale.data(),
-                                                 description_.normalizer.scale.data() +
-                                                     description_.normalizer.size()))
+  row_scale_ = torch::from_blob(const_cast<double*>(n.scale.data()), {n.size()}, torch::kDouble)
                    .to(torch::kFloat);
 }
 

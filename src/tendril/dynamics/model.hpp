@@ -37,7 +37,6 @@ class Model : public envs::DynamicsModel {
   const ModelDescription& description() const { return description_; }
   const ArchitectureSpec& spec() const { return description_.architecture; }
   SequenceNetwork& network() { return *network_; }
-  std::shared_ptr<SequenceNetwork> network_pointer() { return network_; }
 
   // Physical windows [B, window, row] → the network's input [B, sequence, features]: rows
   // normalised; for seed 002 the newest states and inputs stacked as

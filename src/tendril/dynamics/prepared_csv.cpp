@@ -4,7 +4,6 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <string_view>
 
 #include "tendril/core/atomic_file.hpp"

@@ -52,17 +52,4 @@ std::vector<Segment> SequenceData::segments(double max_gap) const {
   return result;
 }
 
-SequenceData SequenceData::slice(int64_t begin, int64_t end) const {
-  require(0 <= begin && begin <= end && end <= rows(), "slice outside the rows", source);
-  SequenceData part;
-  part.state_names = state_names;
-  part.input_names = input_names;
-  part.time = time.segment(begin, end - begin);
-  part.states = states.middleRows(begin, end - begin);
-  part.inputs = inputs.middleRows(begin, end - begin);
-  part.split.assign(split.begin() + begin, split.begin() + end);
-  part.source = source;
-  return part;
-}
-
 }  // namespace tendril::dynamics

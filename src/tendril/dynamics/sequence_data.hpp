@@ -47,9 +47,6 @@ struct SequenceData {
   // from row to row; a longer gap, a step back in time or a change of split starts a new one.
   // A window never spans two segments.
   std::vector<Segment> segments(double max_gap) const;
-
-  // The rows [begin, end) as a new SequenceData.
-  SequenceData slice(int64_t begin, int64_t end) const;
 };
 
 }  // namespace tendril::dynamics
