@@ -112,6 +112,18 @@ TEST_F(FitRun, SameConfigAndSeedGiveTheSameModelFile) {
   EXPECT_NE(bytes(directory_ / "a" / "model.tdm"), bytes(directory_ / "c" / "model.tdm"));
 }
 
+TEST(FitConfigs, EveryShippedConfigReads) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(
+           std::filesystem::path(TENDRIL_CONFIG_DIR) / "dynamics")) {
+    SCOPED_TRACE(entry.path().string());
+    const FitExperiment e = FitExperiment::from_config(Config::load_file(entry.path()));
+    EXPECT_GT(e.training.epochs, 0);
+    ++count;
+  }
+  EXPECT_EQ(count, 11);  // 4 architectures × (default, thesis), fine-tune, scratch, seed 002
+}
+
 TEST_F(FitRun, ConfigErrorsNameTheKey) {
   EXPECT_NE(error_message([&] {
               FitExperiment::from_config(config(std::string(kSmallLstm) + "trainig: {}\n"));
