@@ -17,5 +17,6 @@ int pneumatic_replay_command(const std::vector<std::string>& args);
 int serve_command(const std::vector<std::string>& args);
 int record_command(const std::vector<std::string>& args);
 int plot_command(const std::vector<std::string>& args);
+int dynamics_command(const std::vector<std::string>& args);
 
 }  // namespace tendril::apps

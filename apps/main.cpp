@@ -48,6 +48,12 @@ commands:
   collect <config.yaml> [--set key=value ...]
       Calibrate the SMA limb, collect its data sets (written beside their prepared form),
       replay open-loop throttles after cool-downs, or compare exploration with babbling.
+  dynamics fit <fit.yaml> [--set key=value ...] [--out DIR] [--quiet]
+      Fit a learned dynamics model to a prepared data set; write the run directory (config,
+      progress.csv, TensorBoard events, model.tdm, evaluation.csv).
+  dynamics eval <run-dir|model.tdm> <data.csv> [--split test|train] [--horizons 60,1800]
+                [--out FILE.csv] [--open-loop DIR]
+      One-step and rollout RMSE of a model on a data set; open-loop sine/square/sawtooth runs.
   list-envs
       The registered environment ids.
   help
@@ -86,6 +92,9 @@ int main(int argc, char** argv) {
     if (args[0] == "eval") return tendril::apps::eval_command(rest);
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
     if (args[0] == "record") return tendril::apps::record_command(rest);
+#endif
+#ifdef TENDRIL_WITH_DYNAMICS
+    if (args[0] == "dynamics") return tendril::apps::dynamics_command(rest);
 #endif
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", args[0].c_str(), kUsage);
     return 2;

@@ -1,0 +1,177 @@
+// `tendril dynamics`: fit learned dynamics models and measure how well they predict.
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <sstream>
+
+#include "command_line.hpp"
+#include "commands.hpp"
+#include "tendril/core/atomic_file.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/dynamics/fit_run.hpp"
+#include "tendril/dynamics/model.hpp"
+#include "tendril/dynamics/model_file.hpp"
+#include "tendril/dynamics/open_loop.hpp"
+#include "tendril/dynamics/torch_threads.hpp"
+
+namespace tendril::apps {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace tendril::dynamics;
+
+void print_evaluation(const std::vector<EvaluationRow>& rows) {
+  for (const EvaluationRow& row : rows) {
+    std::string label = row.metric == "one_step" ? "one-step" : "rollout";
+    if (row.metric != "one_step") {
+      char horizon[48];
+      std::snprintf(horizon, sizeof horizon, " %gs", row.horizon);
+      label += horizon;
+    }
+    std::printf("  %-16s", label.c_str());
+    for (std::size_t g = 0; g < row.errors.groups.size(); ++g) {
+      std::printf("  RMSE %s %.4g %s", row.errors.groups[g].name.c_str(), row.errors.rmse[g],
+                  row.errors.groups[g].unit.c_str());
+    }
+    std::printf("  (%lld points, %lld starts)\n", static_cast<long long>(row.errors.points),
+                static_cast<long long>(row.errors.rollouts));
+  }
+}
+
+int fit(const std::vector<std::string>& args) {
+  const CommandLine line = CommandLine::parse(args, {"out"}, {"quiet"});
+  const FitExperiment experiment = FitExperiment::from_config(line.load_config());
+  fs::path run = line.value("out", "");
+  if (run.empty()) {
+    const std::time_t now = std::time(nullptr);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+    run = experiment.output + "-" + stamp;
+  }
+  std::printf("fitting %s on %s for %d epochs, seed %llu -> %s\n",
+              experiment.model ? experiment.model->get<std::string>("architecture").c_str()
+                               : ("fine-tune of " + experiment.init_from.string()).c_str(),
+              experiment.data_file.string().c_str(), experiment.training.epochs,
+              static_cast<unsigned long long>(experiment.seed), run.string().c_str());
+  std::fflush(stdout);
+  const FitResult result = run_fit(experiment, run, line.has("quiet"));
+  const TrainingReport& t = result.training;
+  std::printf(
+      "%d epochs in %.1f s (%.0f windows/s), %lld parameters, %lld train / %lld "
+      "validation windows%s\n",
+      t.epochs_run, t.seconds, t.windows_per_second, static_cast<long long>(result.parameters),
+      static_cast<long long>(t.train_windows), static_cast<long long>(t.validation_windows),
+      t.stopped_early ? " (stopped early)" : "");
+  std::printf("best validation loss %.6g at epoch %d\n", t.best_validation_loss, t.best_epoch);
+  if (!result.evaluation.empty()) {
+    std::printf("test split:\n");
+    print_evaluation(result.evaluation);
+  }
+  std::printf("model:          %s\n", (run / kModelFileName).string().c_str());
+  std::printf("learning curve: %s/progress.csv (TensorBoard: %s)\n", run.string().c_str(),
+              run.string().c_str());
+  return 0;
+}
+
+std::vector<double> parse_numbers(const std::string& text, const std::string& flag) {
+  std::vector<double> numbers;
+  std::stringstream cells(text);
+  std::string cell;
+  while (std::getline(cells, cell, ',')) {
+    try {
+      numbers.push_back(std::stod(cell));
+    } catch (const std::exception&) {
+      throw Error("--" + flag + " expects comma-separated numbers, got '" + text + "'",
+                  "command line");
+    }
+  }
+  return numbers;
+}
+
+const char* const kOpenLoopInputs[] = {"sine", "square", "sawtooth"};
+
+fs::path open_loop_file(const fs::path& directory, const std::string& kind) {
+  return directory / ("open_loop_" + kind + ".csv");
+}
+
+// The model's open-loop response to the three test inputs from the data's first state, one CSV
+// per input in `directory` (the data behind Fig. 4.4's counterpart).
+void write_open_loop(Model& model, const SequenceData& data, const fs::path& directory) {
+  fs::create_directories(directory);
+  const Eigen::VectorXd start = data.states.row(0).transpose();
+  for (const std::string kind : kOpenLoopInputs) {
+    const fs::path file = open_loop_file(directory, kind);
+    const RowMatrixXd inputs = open_loop_inputs(kind, 800);
+    const RowMatrixXd states = open_loop_rollout(model, start, inputs);
+    std::ostringstream out;
+    out.precision(9);
+    out << "time_s";
+    for (const auto& name : data.state_names) out << "," << name;
+    for (const auto& name : data.input_names) out << "," << name;
+    out << "\n";
+    for (Eigen::Index k = 0; k < states.rows(); ++k) {
+      out << static_cast<double>(k) * model.sample_period();
+      for (Eigen::Index c = 0; c < states.cols(); ++c) out << "," << states(k, c);
+      for (Eigen::Index c = 0; c < inputs.cols(); ++c) {
+        out << "," << (k < inputs.rows() ? inputs(k, c) : 0.0);
+      }
+      out << "\n";
+    }
+    write_file_atomically(file, out.str(), "open-loop rollout");
+    std::printf("open loop %-8s -> %s\n", kind.c_str(), file.string().c_str());
+  }
+}
+
+int eval(const std::vector<std::string>& args) {
+  const CommandLine line =
+      CommandLine::parse(args, {"split", "horizons", "max-gap", "out", "open-loop"}, {});
+  require(line.positional.size() == 2, "expected a run directory (or model file) and a data set",
+          "command line");
+  // Refuse before the work, not after it: nothing is overwritten.
+  if (line.has("out")) {
+    require(!fs::exists(line.value("out", "")), "exists; nothing is overwritten",
+            line.value("out", ""));
+  }
+  if (line.has("open-loop")) {
+    for (const std::string kind : kOpenLoopInputs) {
+      const fs::path file = open_loop_file(line.value("open-loop", ""), kind);
+      require(!fs::exists(file), "exists; nothing is overwritten", file.string());
+    }
+  }
+  dynamics::use_one_torch_thread();
+  std::unique_ptr<Model> model = load_model(line.positional[0]);
+  const ModelDescription& d = model->description();
+  const SequenceData data = read_prepared_csv(line.positional[1], {d.state_names, d.input_names});
+  const std::string split_name = line.value("split", "test");
+  require(split_name == "test" || split_name == "train", "--split expects test or train",
+          "command line");
+  const Split split = split_name == "test" ? Split::kTest : Split::kTrain;
+  const std::vector<double> horizons = parse_numbers(line.value("horizons", "60,1800"), "horizons");
+  const double max_gap =
+      segment_gap(data, parse_numbers(line.value("max-gap", "0"), "max-gap").at(0));
+  std::printf("%s (%s, window %d) on the %s split of %s:\n",
+              model_file_path(line.positional[0]).string().c_str(),
+              architecture_name(model->spec().kind).c_str(), model->spec().window,
+              split_name.c_str(), line.positional[1].c_str());
+  const std::vector<EvaluationRow> rows = evaluate_model(*model, data, split, horizons, max_gap);
+  print_evaluation(rows);
+  if (line.has("out")) {
+    write_evaluation_csv(rows, line.value("out", ""));
+    std::printf("errors -> %s\n", line.value("out", "").c_str());
+  }
+  if (line.has("open-loop")) write_open_loop(*model, data, line.value("open-loop", ""));
+  return 0;
+}
+
+}  // namespace
+
+int dynamics_command(const std::vector<std::string>& args) {
+  require(!args.empty(), "expected fit or eval after 'dynamics'", "command line");
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (args[0] == "fit") return fit(rest);
+  if (args[0] == "eval") return eval(rest);
+  throw Error("unknown dynamics command '" + args[0] + "' (expected fit or eval)", "command line");
+}
+
+}  // namespace tendril::apps

@@ -1,0 +1,153 @@
+#include "tendril/dynamics/evaluation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tendril/core/error.hpp"
+#include "tendril/envs/learned/history_windows.hpp"
+
+namespace tendril::dynamics {
+
+namespace {
+
+// Accumulates squared errors per group.
+struct SquaredErrors {
+  explicit SquaredErrors(std::vector<StateGroup> groups)
+      : groups(std::move(groups)), sums(this->groups.size(), 0.0), counts(this->groups.size(), 0) {}
+
+  template <typename Predicted, typename Recorded>
+  void add(const Predicted& predicted, const Recorded& recorded) {
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      for (int c : groups[g].columns) {
+        const double error = static_cast<double>(predicted[c]) - static_cast<double>(recorded[c]);
+        sums[g] += error * error;
+        ++counts[g];
+      }
+    }
+  }
+
+  ErrorReport report(int64_t points, int64_t starts) const {
+    ErrorReport result;
+    result.groups = groups;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      result.rmse.push_back(counts[g] ? std::sqrt(sums[g] / static_cast<double>(counts[g]))
+                                      : std::nan(""));
+    }
+    result.points = points;
+    result.rollouts = starts;
+    return result;
+  }
+
+  std::vector<StateGroup> groups;
+  std::vector<double> sums;
+  std::vector<int64_t> counts;
+};
+
+}  // namespace
+
+std::vector<StateGroup> state_groups(const std::vector<std::string>& state_names) {
+  StateGroup angle{"angle", "deg", {}}, velocity{"velocity", "deg/s", {}};
+  std::vector<StateGroup> others;
+  for (int c = 0; c < static_cast<int>(state_names.size()); ++c) {
+    const std::string& name = state_names[c];
+    if (name.rfind("theta_", 0) == 0) {
+      angle.columns.push_back(c);
+    } else if (name.rfind("omega_", 0) == 0) {
+      velocity.columns.push_back(c);
+    } else {
+      others.push_back(StateGroup{name, "", {c}});
+    }
+  }
+  std::vector<StateGroup> groups;
+  if (!angle.columns.empty()) groups.push_back(angle);
+  if (!velocity.columns.empty()) groups.push_back(velocity);
+  groups.insert(groups.end(), others.begin(), others.end());
+  return groups;
+}
+
+ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split, int batch_size) {
+  const std::vector<int64_t>& ends = windows.ends(split);
+  SquaredErrors errors(state_groups(model.description().state_names));
+  for (std::size_t begin = 0; begin < ends.size(); begin += static_cast<std::size_t>(batch_size)) {
+    const std::span<const int64_t> batch(ends.data() + begin,
+                                         std::min<std::size_t>(batch_size, ends.size() - begin));
+    const torch::Tensor predicted = model.predict(windows.windows(batch)).contiguous();
+    const torch::Tensor recorded = windows.next_states(batch).contiguous();
+    const auto p = predicted.accessor<float, 2>();
+    const auto r = recorded.accessor<float, 2>();
+    for (int64_t i = 0; i < predicted.size(0); ++i) errors.add(p[i], r[i]);
+  }
+  const auto count = static_cast<int64_t>(ends.size());
+  return errors.report(count, count);
+}
+
+std::vector<RowMatrixXd> rollouts(Model& model, const SequenceData& data,
+                                  const std::vector<int64_t>& starts,
+                                  const std::vector<int64_t>& steps) {
+  require(starts.size() == steps.size() && !starts.empty(), "needs one step count per start",
+          "dynamics::rollouts");
+  const int n = model.window_length(), dx = model.state_dim(), du = model.input_dim();
+  const auto envs = static_cast<int>(starts.size());
+  envs::HistoryWindows windows(envs, n, dx, du);
+  for (int i = 0; i < envs; ++i) {
+    require(starts[i] >= n - 1 && starts[i] + steps[i] < data.rows() && steps[i] >= 0,
+            "rollout from row " + std::to_string(starts[i]) + " for " + std::to_string(steps[i]) +
+                " steps leaves the data",
+            data.source);
+    envs::BatchMatrix rows(n, dx + du);
+    for (int k = 0; k < n; ++k) {
+      const int64_t t = starts[i] - (n - 1) + k;
+      rows.row(k).head(dx) = data.states.row(t).cast<float>();
+      rows.row(k).tail(du) = data.inputs.row(t).cast<float>();
+    }
+    windows.set_window(i, rows);
+  }
+  std::vector<RowMatrixXd> predicted(envs);
+  for (int i = 0; i < envs; ++i) predicted[i].resize(steps[i], dx);
+  const int64_t longest = *std::max_element(steps.begin(), steps.end());
+  envs::BatchMatrix inputs(envs, du), next;
+  for (int64_t k = 0; k < longest; ++k) {
+    for (int i = 0; i < envs; ++i) {
+      // A finished rollout keeps stepping on its last input; its predictions are not kept.
+      const int64_t t = starts[i] + std::min(k, steps[i] - 1);
+      inputs.row(i) = data.inputs.row(std::max<int64_t>(t, 0)).cast<float>();
+    }
+    model.step(windows, inputs, next);
+    for (int i = 0; i < envs; ++i) {
+      if (k < steps[i]) predicted[i].row(k) = next.row(i).cast<double>();
+    }
+  }
+  return predicted;
+}
+
+ErrorReport rollout_errors(Model& model, const SequenceData& data, Split split, double horizon,
+                           double max_gap) {
+  require(horizon > 0.0, "the rollout horizon must be positive", "dynamics::rollout_errors");
+  const int n = model.window_length();
+  std::vector<int64_t> starts, steps;
+  for (const Segment& segment : data.segments(max_gap)) {
+    if (segment.split != split) continue;
+    int64_t start = segment.begin + n - 1;
+    while (start + 1 < segment.end) {
+      int64_t end = start;
+      while (end + 1 < segment.end && data.time(end + 1) - data.time(start) <= horizon) ++end;
+      if (end == start) break;
+      starts.push_back(start);
+      steps.push_back(end - start);
+      start = end;
+    }
+  }
+  SquaredErrors errors(state_groups(model.description().state_names));
+  if (starts.empty()) return errors.report(0, 0);
+  const std::vector<RowMatrixXd> predicted = rollouts(model, data, starts, steps);
+  int64_t points = 0;
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    for (int64_t k = 0; k < steps[i]; ++k) {
+      errors.add(predicted[i].row(k), data.states.row(starts[i] + 1 + k));
+    }
+    points += steps[i];
+  }
+  return errors.report(points, static_cast<int64_t>(starts.size()));
+}
+
+}  // namespace tendril::dynamics
