@@ -19,7 +19,7 @@ TEST(Registry, ListsTheBuiltinReferenceTasks) {
             (std::vector<std::string>{
                 "CartPole-v1", "Elastica/OrientedReach-v0", "Elastica/StructuredObstacles-v0",
                 "Elastica/Tracking3D-v0", "Elastica/UnstructuredObstacles-v0", "Identity-v0",
-                "IdentityBox-v0", "MountainCarContinuous-v0", "Pendulum-v1"}));
+                "IdentityBox-v0", "MountainCarContinuous-v0", "Pendulum-v1", "UR5/Reach-v0"}));
   EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
   EXPECT_EQ(builtin_registry().spec("CartPole-v1").max_episode_steps, 500);
   EXPECT_EQ(builtin_registry().spec("MountainCarContinuous-v0").max_episode_steps, 999);
@@ -32,7 +32,7 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "envs::make: unknown environment id 'Pendulum-v0'; registered ids: CartPole-v1, "
             "Elastica/OrientedReach-v0, Elastica/StructuredObstacles-v0, Elastica/Tracking3D-v0, "
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
-            "MountainCarContinuous-v0, Pendulum-v1");
+            "MountainCarContinuous-v0, Pendulum-v1, UR5/Reach-v0");
 }
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {

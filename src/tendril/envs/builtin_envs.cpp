@@ -9,6 +9,7 @@
 #include "tendril/envs/elastica/unstructured_obstacles.hpp"
 #include "tendril/envs/identity/identity.hpp"
 #include "tendril/envs/identity/identity_box.hpp"
+#include "tendril/envs/ur5/ur5_reach.hpp"
 
 namespace tendril::envs {
 
@@ -35,6 +36,9 @@ void register_builtin_envs(Registry& registry) {
   registry.add({"Elastica/UnstructuredObstacles-v0", &elastica::UnstructuredObstacles::create,
                 elastica::UnstructuredObstacles::kEpisodeSteps,
                 "soft arm reaches through a random nest of cylinders (case 4)"});
+  // Seed 004 (SPEC M10): the UR5 in MuJoCo, 1000 steps of 20 ms.
+  registry.add({ur5::Ur5Reach::kId, &ur5::Ur5Reach::create, ur5::Ur5Reach::kEpisodeSteps,
+                "UR5 arm reaches past an obstacle box, tool down (MuJoCo)"});
 }
 
 }  // namespace tendril::envs

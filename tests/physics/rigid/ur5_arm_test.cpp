@@ -17,9 +17,9 @@ namespace {
 
 using Joints = Ur5Arm::Joints;
 
-// Tool down, flange 0.2 m in front of the base and 0.1 m above the table (the reaching task's
+// Tool down, flange 0.25 m in front of the base and 0.1 m above the table (the reaching task's
 // home pose).
-Joints home() { return (Joints() << 2.56, -2.06, 2.86, -2.37, -1.571, 0.0).finished(); }
+Joints home() { return (Joints() << 2.69, -1.80, 2.76, -2.53, -1.571, 0.0).finished(); }
 
 bool inside(const Eigen::Vector3d& point, const Eigen::Vector3d& centre,
             const Eigen::Vector3d& half_extents) {
