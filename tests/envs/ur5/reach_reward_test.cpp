@@ -28,15 +28,25 @@ TEST(ReachReward, ExponentialDistanceTermIsTwoAtTheTargetAndFallsWithSensitivity
   EXPECT_NEAR(reach_reward(w, 0.0, 0.2, 0.0, 0.0, kNoAction, false, false).distance, 0.8987, 1e-4);
 }
 
-TEST(ReachReward, OrientationTermIsItsWeightWhenAlignedAndZeroWhenReversed) {
+TEST(ReachReward, OrientationPenaltyIsZeroWhenAlignedAndItsWeightWhenReversed) {
   ReachRewardWeights w;
-  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, 0.0, 0, kNoAction, false, false).orientation, 0.1);
-  EXPECT_DOUBLE_EQ(
-      reach_reward(w, 0, 0, std::numbers::pi / 2, 0, kNoAction, false, false).orientation, 0.05);
-  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, std::numbers::pi, 0, kNoAction, false, false).orientation,
-                   0.0);
+  const double half_turn = std::numbers::pi;
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, 0.0, 0, kNoAction, false, false).orientation, 0.0);
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, half_turn / 2, 0, kNoAction, false, false).orientation,
+                   -0.05);
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, half_turn, 0, kNoAction, false, false).orientation, -0.1);
   w.orientation = 1.0;  // the tuned weight: distance : orientation goes from 20:1 to 2:1
-  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, 0.0, 0, kNoAction, false, false).orientation, 1.0);
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, half_turn, 0, kNoAction, false, false).orientation, -1.0);
+}
+
+TEST(ReachReward, TheBoundedOrientationFormPaysItsWeightWhenAligned) {
+  ReachRewardWeights w;
+  w.orientation_penalty = false;
+  const double half_turn = std::numbers::pi;
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, 0.0, 0, kNoAction, false, false).orientation, 0.1);
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, half_turn / 2, 0, kNoAction, false, false).orientation,
+                   0.05);
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0, 0, half_turn, 0, kNoAction, false, false).orientation, 0.0);
 }
 
 TEST(ReachReward, ActionPenaltyIsLambdaTimesTheSquaredNorm) {
@@ -53,7 +63,7 @@ TEST(ReachReward, TimeSuccessAndCollisionTerms) {
   EXPECT_DOUBLE_EQ(plain.time, -0.01);
   EXPECT_EQ(plain.success, 0.0);
   EXPECT_EQ(plain.collision, 0.0);
-  EXPECT_DOUBLE_EQ(reach_reward(w, 0.3, 0.3, 0, 0, kNoAction, true, false).success, 10.0);
+  EXPECT_DOUBLE_EQ(reach_reward(w, 0.3, 0.3, 0, 0, kNoAction, true, false).success, 300.0);
   EXPECT_DOUBLE_EQ(reach_reward(w, 0.3, 0.3, 0, 0, kNoAction, false, true).collision, -10.0);
 }
 
@@ -72,13 +82,21 @@ TEST(ReachReward, TotalIsTheSumAndZeroWeightsSwitchTermsOff) {
 
 TEST(ReachReward, WeightsAreReadFromParamsAndNegativeOnesRejected) {
   const Config params = Config::parse(
-      "{progress_weight: 5, distance_weight: 0, orientation_weight: 1.0, success_bonus: 50}");
+      "{progress_weight: 5, distance_weight: 0, orientation_weight: 1.0, success_bonus: 50, "
+      "orientation_form: bounded}");
   const ReachRewardWeights w = ReachRewardWeights::from_config(params);
   EXPECT_EQ(w.progress, 5.0);
   EXPECT_EQ(w.distance, 0.0);
   EXPECT_EQ(w.orientation, 1.0);
   EXPECT_EQ(w.success, 50.0);
   EXPECT_EQ(w.collision, 10.0);
+  EXPECT_FALSE(w.orientation_penalty);
+  EXPECT_TRUE(ReachRewardWeights::from_config(Config::parse("{}")).orientation_penalty);
+  const Config unknown_form = Config::parse("{orientation_form: cosine}", "exp.yaml");
+  EXPECT_NE(testing::error_message([&] {
+              ReachRewardWeights::from_config(unknown_form);
+            }).find("orientation_form"),
+            std::string::npos);
   const Config bad = Config::parse("{time_penalty: -1}", "exp.yaml");
   EXPECT_NE(
       testing::error_message([&] { ReachRewardWeights::from_config(bad); }).find("time_penalty"),

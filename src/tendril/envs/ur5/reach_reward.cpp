@@ -10,11 +10,14 @@ namespace tendril::envs::ur5 {
 
 namespace {
 
+std::string key_of(const Config& params, const std::string& key) {
+  return params.source() + ": " + (params.path().empty() ? "" : params.path() + ".") + key;
+}
+
 double read_weight(const Config& params, const std::string& key, double fallback) {
   const double value = params.get_or<double>(key, fallback);
   if (!std::isfinite(value) || value < 0.0) {
-    throw Error("must be finite and >= 0, got " + std::to_string(value),
-                params.source() + ": " + (params.path().empty() ? "" : params.path() + ".") + key);
+    throw Error("must be finite and >= 0, got " + std::to_string(value), key_of(params, key));
   }
   return value;
 }
@@ -30,6 +33,12 @@ ReachRewardWeights ReachRewardWeights::from_config(const Config& params) {
   w.time = read_weight(params, "time_penalty", w.time);
   w.success = read_weight(params, "success_bonus", w.success);
   w.collision = read_weight(params, "collision_penalty", w.collision);
+  const std::string form = params.get_or<std::string>("orientation_form", "penalty");
+  if (form != "penalty" && form != "bounded") {
+    throw Error("must be 'penalty' or 'bounded', got '" + form + "'",
+                key_of(params, "orientation_form"));
+  }
+  w.orientation_penalty = form == "penalty";
   return w;
 }
 
@@ -40,7 +49,9 @@ ReachRewardTerms reach_reward(const ReachRewardWeights& weights, double previous
   ReachRewardTerms terms;
   terms.progress = weights.progress * (previous_distance - distance);
   terms.distance = weights.distance * std::exp(-weights.distance_sensitivity * distance);
-  terms.orientation = weights.orientation * (1.0 - orientation_error / std::numbers::pi);
+  const double misalignment = orientation_error / std::numbers::pi;  // in [0, 1]
+  terms.orientation =
+      weights.orientation * (weights.orientation_penalty ? -misalignment : 1.0 - misalignment);
   terms.action = -action_penalty_weight * action.squaredNorm();
   terms.time = -weights.time;
   terms.success = success ? weights.success : 0.0;
