@@ -21,6 +21,9 @@ commands:
       eval.csv, checkpoints/, model.pt). --stop-at pauses at the first checkpoint past STEPS.
   eval <run-dir> [--episodes N] [--deterministic] [--seed S] [--best]
       Evaluate a run's model (model.pt, else its newest checkpoint; --best: best_model.pt).
+  rollout <run-dir> --out FILE.csv [--episodes N] [--seed S] [--deterministic] [--best]
+      Run a run's policy for N episodes (reset seeds S, S+1, ...) and write every transition
+      (observation, action, reward, next observation, info) to a new CSV file.
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.
@@ -48,6 +51,7 @@ int main(int argc, char** argv) {
     if (args[0] == "train") return tendril::apps::train_command(rest);
     if (args[0] == "eval") return tendril::apps::eval_command(rest);
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
+    if (args[0] == "rollout") return tendril::apps::rollout_command(rest);
 #endif
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", args[0].c_str(), kUsage);
     return 2;
