@@ -14,7 +14,8 @@ namespace tendril::envs {
 // The count is that of one environment instance, over all its episodes (resets do not restart
 // it; snapshots carry it). With n_envs copies stepped in parallel, `steps` env steps of each are
 // n_envs × steps steps of training: a curriculum over a budget of T training steps uses
-// steps = T / n_envs.
+// steps = T / n_envs. Training checkpoints do not hold environment snapshots (yet), so a run
+// resumed from a checkpoint builds fresh environments whose counts start again from 0.
 class StepSchedule {
  public:
   static StepSchedule constant(double value);
