@@ -18,5 +18,6 @@ int serve_command(const std::vector<std::string>& args);
 int record_command(const std::vector<std::string>& args);
 int plot_command(const std::vector<std::string>& args);
 int dynamics_command(const std::vector<std::string>& args);
+int rollout_command(const std::vector<std::string>& args);
 
 }  // namespace tendril::apps

@@ -25,6 +25,11 @@ commands:
   eval <run-dir> [--episodes N] [--deterministic] [--seed S] [--best]
       Evaluate a run's policy (model.policy, else its newest checkpoint; --best:
       best_model.policy).
+  rollout <run-dir> [--episodes N | --steps N] [--out FILE.csv] [--seed S] [--best]
+          [--deterministic|--stochastic]
+      Run a run's policy for N episodes (reset seeds S, S+1, ...) or N steps; print the mean
+      per step of the reward and of every info value; --out writes every transition
+      (observation, action, reward, next observation, info and scene values) to a new CSV file.
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.
@@ -92,6 +97,7 @@ int main(int argc, char** argv) {
     if (args[0] == "eval") return tendril::apps::eval_command(rest);
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
     if (args[0] == "record") return tendril::apps::record_command(rest);
+    if (args[0] == "rollout") return tendril::apps::rollout_command(rest);
 #endif
 #ifdef TENDRIL_WITH_DYNAMICS
     if (args[0] == "dynamics") return tendril::apps::dynamics_command(rest);

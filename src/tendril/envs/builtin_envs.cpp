@@ -12,6 +12,7 @@
 #include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_env.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
+#include "tendril/envs/ur5/ur5_reach.hpp"
 
 namespace tendril::envs {
 
@@ -51,6 +52,9 @@ void register_builtin_envs(Registry& registry) {
   // limit: data collection runs for hours, tasks bring their own.
   registry.add({sma_limb::SmaLimbEnv::kId, &sma_limb::SmaLimbEnv::create, std::nullopt,
                 "SMA-actuated silicone limb: throttles in, bend-sensor readings out (twin)"});
+  // Seed 004 (SPEC M10): the UR5 in MuJoCo, 1000 steps of 20 ms.
+  registry.add({ur5::Ur5Reach::kId, &ur5::Ur5Reach::create, ur5::Ur5Reach::kEpisodeSteps,
+                "UR5 arm reaches past an obstacle box, tool down (MuJoCo)"});
 }
 
 }  // namespace tendril::envs

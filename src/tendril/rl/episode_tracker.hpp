@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
 
 #include "tendril/core/archive.hpp"
 #include "tendril/envs/vector/vec_env.hpp"
@@ -11,7 +12,9 @@
 namespace tendril::rl {
 
 // Returns and lengths of the last 100 finished episodes (SB3's ep_info_buffer), read from the
-// EpisodeStatistics wrapper's info of each finished env, and the count of finished episodes.
+// EpisodeStatistics wrapper's info of each finished env, and the count of finished episodes;
+// and, for environments that report "is_success" on an episode's last step, whether each of the
+// last 100 such episodes succeeded (SB3's ep_success_buffer, logged as rollout/success_rate).
 class EpisodeTracker {
  public:
   void record(const envs::VecStep& step);
@@ -19,6 +22,8 @@ class EpisodeTracker {
   int64_t episodes() const { return episodes_; }
   double mean_return() const;  // 0 when none finished yet
   double mean_length() const;
+  // Fraction of the last 100 episodes that reported is_success = 1; unset until one reported.
+  std::optional<double> success_rate() const;
   // Oldest first.
   const std::deque<double>& recent_returns() const { return returns_; }
   // Fills the episode fields of `progress`.
@@ -30,7 +35,7 @@ class EpisodeTracker {
 
  private:
   int64_t episodes_ = 0;
-  std::deque<double> returns_, lengths_;
+  std::deque<double> returns_, lengths_, successes_;
 };
 
 }  // namespace tendril::rl

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +22,8 @@ struct Progress {
   double episode_return_mean = 0.0;  // over the last 100 finished episodes (0 if none)
   double episode_length_mean = 0.0;
   int64_t episodes = 0;  // finished episodes so far
+  // Over the last 100 episodes that reported "is_success" (unset if the env reports none).
+  std::optional<double> success_rate;
   TrainStats train;
   // Wall time of this iteration: stepping the environments, policy inference, the updates.
   double env_seconds = 0.0, inference_seconds = 0.0, update_seconds = 0.0;

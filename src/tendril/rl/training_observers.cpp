@@ -66,6 +66,7 @@ bool ScalarLogObserver::on_iteration(const Progress& p) {
     log_.record("rollout/ep_rew_mean", p.episode_return_mean);
     log_.record("rollout/ep_len_mean", p.episode_length_mean);
   }
+  if (p.success_rate) log_.record("rollout/success_rate", *p.success_rate);
   for (const auto& [name, value] : p.train) log_.record(name, value);
   log_.dump(p.timesteps);
   return true;
