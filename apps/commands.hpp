@@ -11,5 +11,6 @@ int list_envs_command(const std::vector<std::string>& args);
 int train_command(const std::vector<std::string>& args);
 int eval_command(const std::vector<std::string>& args);
 int sweep_command(const std::vector<std::string>& args);
+int metrics_command(const std::vector<std::string>& args);
 
 }  // namespace tendril::apps

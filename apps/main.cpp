@@ -24,6 +24,12 @@ commands:
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.
+  metrics <run-dir> [--steps N] [--seed S] [--stochastic] [--best] [--set key=value ...]
+          [--trace FILE]
+      Run a run's model for N steps (auto-reset; deterministic unless --stochastic) and print
+      the mean per step of the reward and of every info value; --set changes the run's
+      experiment for this (e.g. env.params); --trace writes every step's info and scene
+      values as CSV.
   list-envs
       The registered environment ids.
   help
@@ -48,6 +54,7 @@ int main(int argc, char** argv) {
     if (args[0] == "train") return tendril::apps::train_command(rest);
     if (args[0] == "eval") return tendril::apps::eval_command(rest);
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
+    if (args[0] == "metrics") return tendril::apps::metrics_command(rest);
 #endif
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", args[0].c_str(), kUsage);
     return 2;
