@@ -26,10 +26,11 @@ commands:
       Evaluate a run's policy (model.policy, else its newest checkpoint; --best:
       best_model.policy).
   rollout <run-dir> [--episodes N | --steps N] [--out FILE.csv] [--seed S] [--best]
-          [--deterministic|--stochastic]
+          [--deterministic|--stochastic] [--set key=value ...]
       Run a run's policy for N episodes (reset seeds S, S+1, ...) or N steps; print the mean
       per step of the reward and of every info value; --out writes every transition
-      (observation, action, reward, next observation, info and scene values) to a new CSV file.
+      (observation, action, reward, next observation, info and scene values) to a new CSV file;
+      --set changes the run's experiment for this (e.g. env.params).
   sweep <sweep.yaml> [--list] [--only I] [--quiet]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
       other into <output>/<run>; finished runs are kept, interrupted ones resumed.

@@ -55,7 +55,7 @@ class TraceFile {
 
   void write(int64_t episode, int64_t step_index, const Scene& scene,
              const Observation& observation, const Action& action, const Step& step) {
-    if (columns_.empty()) write_header(observation, action, step, scene);
+    if (!header_written_) write_header(observation, action, step, scene);
     std::string row = std::to_string(episode) + ',' + std::to_string(step_index) + ',' +
                       exact(scene.time) + ',' + exact(step.reward) + ',' +
                       (step.terminated ? "1" : "0") + ',' + (step.truncated ? "1" : "0");
@@ -79,7 +79,8 @@ class TraceFile {
   void write_header(const Observation& observation, const Action& action, const Step& step,
                     const Scene& scene) {
     std::string header = "episode,step,time,reward,terminated,truncated";
-    for (std::size_t i = 0; i < observation.size(); ++i) header += ",observation_" + std::to_string(i);
+    for (std::size_t i = 0; i < observation.size(); ++i)
+      header += ",observation_" + std::to_string(i);
     for (std::size_t i = 0; i < action.size(); ++i) header += ",action_" + std::to_string(i);
     for (std::size_t i = 0; i < observation.size(); ++i) {
       header += ",next_observation_" + std::to_string(i);
@@ -90,11 +91,13 @@ class TraceFile {
     }
     for (const std::string& name : columns_) header += ',' + name;
     out_ << header << '\n';
+    header_written_ = true;
   }
 
   fs::path file_;
   std::ofstream out_;
   std::vector<std::string> columns_;
+  bool header_written_ = false;
 };
 
 }  // namespace
@@ -130,10 +133,10 @@ int rollout_command(const std::vector<std::string>& args) {
     trace.emplace(out);
   }
 
-  RunPolicy policy = open_run_policy(run, line.has("best"));
-  const bool deterministic = line.has("deterministic")  ? true
-                             : line.has("stochastic") ? false
-                                                      : policy.experiment.eval_deterministic;
+  RunPolicy policy = open_run_policy(run, line.has("best"), line.overrides);
+  const bool deterministic = line.has("deterministic") ? true
+                             : line.has("stochastic")  ? false
+                                                       : policy.experiment.eval_deterministic;
   Rng rng(seed, /*stream=*/1);
   Env& env = *policy.env;
 
@@ -177,7 +180,8 @@ int rollout_command(const std::vector<std::string>& args) {
   std::printf("\n");
   const double n = static_cast<double>(steps_done);
   std::printf("  %-24s %14.6g\n", "reward per step", reward_sum / n);
-  for (const auto& [name, sum] : sums.entries) std::printf("  %-24s %14.6g\n", name.c_str(), sum / n);
+  for (const auto& [name, sum] : sums.entries)
+    std::printf("  %-24s %14.6g\n", name.c_str(), sum / n);
   return 0;
 }
 

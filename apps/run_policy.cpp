@@ -10,10 +10,12 @@ namespace tendril::apps {
 
 namespace fs = std::filesystem;
 
-RunPolicy open_run_policy(const fs::path& run, bool best) {
+RunPolicy open_run_policy(const fs::path& run, bool best,
+                          const std::vector<std::pair<std::string, std::string>>& overrides) {
   require(fs::exists(run / "config.yaml"), "not a run directory (no config.yaml)", run.string());
-  RunPolicy result{rl::Experiment::from_config(Config::load_file(run / "config.yaml")), {}, {}, {},
-                   {}};
+  Config config = Config::load_file(run / "config.yaml");
+  for (const auto& [key, value] : overrides) config.set(key, value);
+  RunPolicy result{rl::Experiment::from_config(config), {}, {}, {}, {}};
   const rl::Experiment& experiment = result.experiment;
   const fs::path file = run / (best ? "best_model.policy" : "model.policy");
   require(!best || fs::exists(file), "no best_model.policy (the run's eval.save_best is off)",

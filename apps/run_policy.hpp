@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tendril/core/env.hpp"
 #include "tendril/rl/experiment.hpp"
@@ -22,6 +24,9 @@ struct RunPolicy {
   std::shared_ptr<void> keep_alive;  // what the policy needs (a checkpoint's algorithm and env)
 };
 
-RunPolicy open_run_policy(const std::filesystem::path& run, bool best);
+// `overrides` (key=value, as --set gives them) change the run's experiment for this, e.g. the
+// environment's parameters to test a policy on conditions it was not trained on.
+RunPolicy open_run_policy(const std::filesystem::path& run, bool best,
+                          const std::vector<std::pair<std::string, std::string>>& overrides = {});
 
 }  // namespace tendril::apps

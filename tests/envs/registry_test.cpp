@@ -17,20 +17,26 @@ using testing::error_message;
 TEST(Registry, ListsTheBuiltinReferenceTasks) {
   EXPECT_EQ(registered_ids(),
             (std::vector<std::string>{
-                "CartPole-v1", "Elastica/OrientedReach-v0", "Elastica/StructuredObstacles-v0",
-                "Elastica/Tracking3D-v0", "Elastica/UnstructuredObstacles-v0", "Identity-v0",
-                "IdentityBox-v0", "MountainCarContinuous-v0", "Pendulum-v1", "PneumaticArm/Reach-v0",
+                "Beam/ArcFollow-v0", "Beam/EllipseFollow-v0", "Beam/EnergyAwareFollow-v0",
+                "Beam/TrajectoryFollow-v0", "CartPole-v1", "Elastica/OrientedReach-v0",
+                "Elastica/StructuredObstacles-v0", "Elastica/Tracking3D-v0",
+                "Elastica/UnstructuredObstacles-v0", "Identity-v0", "IdentityBox-v0",
+                "MountainCarContinuous-v0", "Pendulum-v1", "PneumaticArm/Reach-v0",
                 "PneumaticArm/Robot-v0", "SmaLimb/Robot-v0", "UR5/Reach-v0"}));
   EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
   EXPECT_EQ(builtin_registry().spec("CartPole-v1").max_episode_steps, 500);
   EXPECT_EQ(builtin_registry().spec("MountainCarContinuous-v0").max_episode_steps, 999);
   EXPECT_EQ(builtin_registry().spec("Identity-v0").max_episode_steps, 100);
   EXPECT_EQ(builtin_registry().spec("IdentityBox-v0").max_episode_steps, 100);
+  EXPECT_EQ(builtin_registry().spec("Beam/ArcFollow-v0").max_episode_steps, 200);
+  EXPECT_EQ(builtin_registry().spec("Beam/EllipseFollow-v0").max_episode_steps, 260);
 }
 
 TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
   EXPECT_EQ(error_message([] { make("Pendulum-v0"); }),
-            "envs::make: unknown environment id 'Pendulum-v0'; registered ids: CartPole-v1, "
+            "envs::make: unknown environment id 'Pendulum-v0'; registered ids: "
+            "Beam/ArcFollow-v0, Beam/EllipseFollow-v0, Beam/EnergyAwareFollow-v0, "
+            "Beam/TrajectoryFollow-v0, CartPole-v1, "
             "Elastica/OrientedReach-v0, Elastica/StructuredObstacles-v0, Elastica/Tracking3D-v0, "
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
             "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/Reach-v0, "

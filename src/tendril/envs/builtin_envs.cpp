@@ -1,5 +1,6 @@
 #include "tendril/envs/builtin_envs.hpp"
 
+#include "tendril/envs/beam/beam_tasks.hpp"
 #include "tendril/envs/classic_control/cart_pole.hpp"
 #include "tendril/envs/classic_control/mountain_car_continuous.hpp"
 #include "tendril/envs/classic_control/pendulum.hpp"
@@ -55,6 +56,17 @@ void register_builtin_envs(Registry& registry) {
   // Seed 004 (SPEC M10): the UR5 in MuJoCo, 1000 steps of 20 ms.
   registry.add({ur5::Ur5Reach::kId, &ur5::Ur5Reach::create, ur5::Ur5Reach::kEpisodeSteps,
                 "UR5 arm reaches past an obstacle box, tool down (MuJoCo)"});
+  // Seed 003's mass-spring beam under five torques (SPEC M4): 10 s of 50 ms steps, 13 s for
+  // the ellipse.
+  registry.add({"Beam/ArcFollow-v0", &beam::make_arc_follow, beam::kArcEpisodeSteps,
+                "mass-spring beam's tip follows arcs (task 1)"});
+  registry.add({"Beam/TrajectoryFollow-v0", &beam::make_trajectory_follow, beam::kArcEpisodeSteps,
+                "mass-spring beam's tip follows arcs at a varying speed (task 2)"});
+  registry.add({"Beam/EnergyAwareFollow-v0", &beam::make_energy_aware_follow,
+                beam::kArcEpisodeSteps,
+                "mass-spring beam follows arcs and saves torque work (task 3)"});
+  registry.add({"Beam/EllipseFollow-v0", &beam::make_ellipse_follow, beam::kEllipseEpisodeSteps,
+                "mass-spring beam's tip follows an ellipse, with levels (task 4)"});
 }
 
 }  // namespace tendril::envs

@@ -4,6 +4,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/envs/builtin_envs.hpp"
+#include "tendril/envs/wrappers/curriculum.hpp"
 #include "tendril/envs/wrappers/time_limit.hpp"
 
 namespace tendril::envs {
@@ -64,6 +65,15 @@ std::unique_ptr<Env> Registry::make(std::string_view id, const Config& params) c
                 "max_episode_steps");
   }
   std::unique_ptr<Env> env = found.factory(params);
+  if (params.has("curriculum")) {
+    const CurriculumRule rule = CurriculumRule::from_config(params.child("curriculum"));
+    if (dynamic_cast<CurriculumTask*>(env.get()) == nullptr) {
+      throw Error("environment '" + found.id + "' has no curriculum levels",
+                  params.source() + ": " + (params.path().empty() ? "" : params.path() + ".") +
+                      "curriculum");
+    }
+    env = std::make_unique<Curriculum>(std::move(env), rule);
+  }
   try {
     params.reject_unknown();
   } catch (const Error& e) {

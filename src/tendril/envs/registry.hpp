@@ -42,8 +42,10 @@ class Registry {
   std::vector<std::string> ids() const;
 
   // Builds `id` from `params`. The optional parameter `max_episode_steps` (an integer ≥ 1)
-  // overrides the registered time limit. Every other key of `params` must be read by the
-  // factory: an unknown one raises Error naming it and the environment.
+  // overrides the registered time limit; `curriculum` (a mapping, CurriculumRule) wraps an
+  // environment whose task has levels (CurriculumTask) in a Curriculum, inside the time limit.
+  // Every other key of `params` must be read by the factory: an unknown one raises Error naming it
+  // and the environment.
   std::unique_ptr<Env> make(std::string_view id, const Config& params = Config()) const;
 
  private:
