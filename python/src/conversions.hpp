@@ -1,0 +1,49 @@
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <string_view>
+
+#include "tendril/core/config.hpp"
+#include "tendril/core/env.hpp"
+#include "tendril/core/scene.hpp"
+#include "tendril/envs/vector/vec_step.hpp"
+
+namespace tendril::python {
+
+namespace py = pybind11;
+
+// A float32 NumPy array of any shape and layout, converted to C order when needed.
+using FloatArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
+
+// {"kind": "box", "low": float32[n], "high": float32[n]} or {"kind": "discrete", "n": n}.
+py::dict space_to_dict(const Space& space);
+
+// {name: value} of a step's named scalars.
+py::dict info_to_dict(const Info& info);
+
+// The scene as NumPy arrays (lab frame, metres): {"time", "rods": [{"role", "centreline"
+// (nodes × 3), "radii"}], "spheres", "cylinders", "boxes", "planes", "lattices", "paths",
+// "values"}.
+py::dict scene_to_dict(const Scene& scene);
+
+// Parameters given as JSON text (a YAML flow mapping) by the Python side; `what` names them in
+// errors ("tendril.make('Pendulum-v1') params").
+Config params_from_json(const std::string& json, const std::string& what);
+
+// One action for `space`, from a NumPy array or Python number: a Box action of exactly the
+// space's size (shape (n,) or, for n = 1, a scalar), a Discrete action as an integer index.
+// Raises Error naming `who` and the shape found otherwise; values are checked by Env::step.
+Action action_from_python(const Space& space, const py::handle& value, std::string_view who);
+
+// (rows × cols) actions for `space` from a NumPy batch, into `out`. Raises Error naming `who`
+// and the shape found unless it is (num_envs, size), or (num_envs,) for Discrete or size 1.
+void batch_from_python(const Space& space, int num_envs, const py::handle& value,
+                       std::string_view who, envs::BatchMatrix& out);
+
+// A NumPy view of `data` owned by `owner` (kept alive by the array), read-only.
+py::array readonly_view(const float* data, std::vector<py::ssize_t> shape, py::handle owner);
+
+}  // namespace tendril::python

@@ -1,0 +1,114 @@
+// tendril::Env as the extension's `Env`: the environment under tendril.make's gymnasium.Env.
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/envs/registry.hpp"
+
+namespace tendril::python {
+
+namespace {
+
+class PyEnv {
+ public:
+  PyEnv(const std::string& id, const std::string& params_json)
+      : id_(id),
+        env_(envs::make(id, params_from_json(params_json, "tendril.make('" + id + "') params"))),
+        who_("tendril env " + id + " step") {}
+
+  py::array_t<float> reset(std::optional<uint64_t> seed) {
+    Observation observation;
+    {
+      py::gil_scoped_release release;
+      observation = env_->reset(seed);
+    }
+    reset_ = true;
+    return to_numpy(observation);
+  }
+
+  py::tuple step(const py::handle& action_value) {
+    require(reset_, "call reset() before step()", who_);
+    const Action action = action_from_python(env_->action_space(), action_value, who_);
+    Step step;
+    {
+      py::gil_scoped_release release;
+      step = env_->step(action);
+    }
+    return py::make_tuple(to_numpy(step.observation), step.reward, step.terminated, step.truncated,
+                          info_to_dict(step.info));
+  }
+
+  py::object scene() const {
+    Scene scene;
+    if (!env_->describe_scene(scene)) return py::none();
+    return scene_to_dict(scene);
+  }
+
+  py::bytes save_state() const {
+    Snapshot bytes;
+    SnapshotWriter writer(bytes);
+    env_->save_state(writer);
+    return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  }
+
+  void load_state(const py::bytes& state) {
+    const auto bytes = static_cast<std::string>(state);
+    SnapshotReader reader(
+        std::span<const std::byte>(reinterpret_cast<const std::byte*>(bytes.data()), bytes.size()));
+    env_->load_state(reader);
+    reset_ = true;
+  }
+
+  const std::string& id() const { return id_; }
+  Env& env() { return *env_; }
+
+ private:
+  static py::array_t<float> to_numpy(const Observation& observation) {
+    py::array_t<float> out(observation.size());
+    std::copy(observation.data(), observation.data() + observation.size(), out.mutable_data());
+    return out;
+  }
+
+  std::string id_;
+  std::unique_ptr<Env> env_;
+  std::string who_;
+  bool reset_ = false;
+};
+
+}  // namespace
+
+void bind_env(py::module_& m) {
+  m.def("registered_ids", &envs::registered_ids, "Every registered environment id, sorted.");
+  m.def(
+      "max_episode_steps",
+      [](const std::string& id) { return envs::builtin_registry().spec(id).max_episode_steps; },
+      "The registered time limit of `id` (None when it has none).");
+  m.def(
+      "summary", [](const std::string& id) { return envs::builtin_registry().spec(id).summary; },
+      "One line describing `id`.");
+
+  py::class_<PyEnv>(m, "Env", "One registered tendril environment (with its time limit).")
+      .def(py::init<const std::string&, const std::string&>(), py::arg("id"),
+           py::arg("params_json") = "{}")
+      .def_property_readonly("id", &PyEnv::id)
+      .def_property_readonly(
+          "observation_space",
+          [](PyEnv& self) { return space_to_dict(self.env().observation_space()); })
+      .def_property_readonly("action_space",
+                             [](PyEnv& self) { return space_to_dict(self.env().action_space()); })
+      .def("reset", &PyEnv::reset, py::arg("seed") = py::none())
+      .def("step", &PyEnv::step, py::arg("action"))
+      .def("scene", &PyEnv::scene)
+      .def_property_readonly("supports_snapshots",
+                             [](PyEnv& self) { return self.env().supports_snapshots(); })
+      .def("save_state", &PyEnv::save_state)
+      .def("load_state", &PyEnv::load_state, py::arg("state"))
+      .def("close", [](PyEnv& self) { self.env().close(); });
+}
+
+}  // namespace tendril::python

@@ -1,0 +1,146 @@
+// Trained policies (rl::Policy, torch-free) and the trainer, as the extension's `Policy` and
+// `train`.
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <ctime>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "conversions.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/rl/experiment.hpp"
+#include "tendril/rl/policy.hpp"
+#include "tendril/rl/trainer.hpp"
+
+namespace tendril::python {
+
+namespace {
+
+class PyPolicy {
+ public:
+  PyPolicy(const std::filesystem::path& path, bool best, uint64_t seed) : rng_(seed) {
+    std::filesystem::path file = path;
+    if (std::filesystem::is_directory(path)) {
+      file = path / (best ? "best_model.policy" : "model.policy");
+      require(std::filesystem::exists(file),
+              "the run has no " + file.filename().string() +
+                  " (a run writes model.policy when it finishes; best_model.policy with "
+                  "eval.save_best)",
+              path.string());
+    }
+    policy_ = rl::load_policy(file);
+    file_ = file;
+  }
+
+  const rl::Policy& policy() const { return *policy_; }
+  const std::filesystem::path& file() const { return file_; }
+
+  // One observation (obs size,) → one action; a batch (B, obs size) → (B, action size).
+  py::array act(const py::handle& value, bool deterministic) {
+    const FloatArray array = FloatArray::ensure(value);
+    const std::string who = "policy " + file_.string();
+    require(static_cast<bool>(array), "observations must be a number array", who);
+    const auto size = static_cast<py::ssize_t>(policy_->observation_space().size());
+    const bool single = array.ndim() == 1 && array.shape(0) == size;
+    const bool batch = array.ndim() == 2 && array.shape(1) == size;
+    require(single || batch,
+            "expected an observation of shape (" + std::to_string(size) + ",) or a batch (B, " +
+                std::to_string(size) + "), got " + std::to_string(array.ndim()) + "-d array of " +
+                std::to_string(array.size()) + " values",
+            who);
+    const py::ssize_t rows = single ? 1 : array.shape(0);
+    observations_.resize(rows, size);
+    std::copy(array.data(), array.data() + rows * size, observations_.data());
+    {
+      py::gil_scoped_release release;
+      policy_->act(observations_, deterministic, rng_, actions_);
+    }
+    const auto cols = static_cast<py::ssize_t>(actions_.cols());
+    if (policy_->action_space().is_discrete()) {
+      py::array_t<int64_t> out(rows);
+      for (py::ssize_t r = 0; r < rows; ++r) {
+        out.mutable_data()[r] = static_cast<int64_t>(actions_(r, 0));
+      }
+      if (single) return out.attr("reshape")(py::tuple()).cast<py::array>();
+      return out;
+    }
+    py::array_t<float> out(single ? std::vector<py::ssize_t>{cols}
+                                  : std::vector<py::ssize_t>{rows, cols});
+    std::copy(actions_.data(), actions_.data() + rows * cols, out.mutable_data());
+    return out;
+  }
+
+ private:
+  std::unique_ptr<rl::Policy> policy_;
+  std::filesystem::path file_;
+  Rng rng_;
+  envs::BatchMatrix observations_, actions_;
+};
+
+std::filesystem::path new_run_directory(const std::string& output) {
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  return output + "-" + stamp;
+}
+
+}  // namespace
+
+void bind_policy(py::module_& m) {
+  py::class_<PyPolicy>(m, "Policy", "A trained policy file (rl::load_policy).")
+      .def(py::init<const std::filesystem::path&, bool, uint64_t>(), py::arg("path"),
+           py::arg("best") = false, py::arg("seed") = 0)
+      .def_property_readonly("kind", [](PyPolicy& self) { return self.policy().kind(); })
+      .def_property_readonly("file", [](PyPolicy& self) { return self.file().string(); })
+      .def_property_readonly(
+          "observation_space",
+          [](PyPolicy& self) { return space_to_dict(self.policy().observation_space()); })
+      .def_property_readonly(
+          "action_space",
+          [](PyPolicy& self) { return space_to_dict(self.policy().action_space()); })
+      .def("act", &PyPolicy::act, py::arg("observation"), py::arg("deterministic") = true);
+}
+
+void bind_train(py::module_& m) {
+  m.def(
+      "train",
+      [](const std::filesystem::path& config_file, const std::vector<std::string>& overrides,
+         std::optional<std::filesystem::path> out, std::optional<int64_t> stop_at, bool quiet) {
+        Config config = Config::load_file(config_file);
+        for (const std::string& assignment : overrides) {
+          const auto equals = assignment.find('=');
+          require(equals != std::string::npos && equals > 0,
+                  "an override is key.path=value, got '" + assignment + "'", "tendril.train");
+          config.set(assignment.substr(0, equals), assignment.substr(equals + 1));
+        }
+        const rl::Experiment experiment = rl::Experiment::from_config(config);
+        const std::filesystem::path run = out ? *out : new_run_directory(experiment.output);
+        rl::TrainOptions options;
+        options.stop_at = stop_at;
+        options.quiet = quiet;
+        rl::TrainResult result;
+        {
+          py::gil_scoped_release release;
+          result = rl::train(experiment, run, options);
+        }
+        py::dict summary;
+        summary["run_directory"] = result.run_directory.string();
+        summary["timesteps"] = result.timesteps;
+        summary["finished"] = result.finished;
+        summary["final_eval_mean"] = result.final_eval_mean;
+        summary["final_eval_std"] = result.final_eval_std;
+        summary["seconds"] = result.seconds;
+        summary["steps_per_second"] = result.steps_per_second;
+        return summary;
+      },
+      py::arg("config_file"), py::arg("overrides") = std::vector<std::string>{},
+      py::arg("out") = py::none(), py::arg("stop_at") = py::none(), py::arg("quiet") = false,
+      "Runs an experiment file in-process (tendril train), GIL released.");
+}
+
+}  // namespace tendril::python

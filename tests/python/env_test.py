@@ -1,0 +1,165 @@
+"""tendril.make: Gymnasium's env checker on every registered environment, seeded episodes equal
+to the C++ environment's bit for bit, scene arrays, snapshots, and errors as tendril.Error."""
+import math
+import os
+import subprocess
+import sys
+import warnings
+
+import numpy as np
+import pytest
+
+from conftest import reference_episode, require_gymnasium
+
+import tendril
+
+IDS = tendril.registry()
+# Gymnasium's advice, not faults: Box action spaces other than [-1, 1] (its own Pendulum-v1
+# gets it) and unbounded observation components (PyElastica's arm environments have them too).
+ADVICE = ("We recommend you to use a symmetric and normalized Box action space",
+          "For Box action spaces, we recommend using a symmetric and normalized space",
+          "A Box observation space minimum value is -infinity",
+          "A Box observation space maximum value is -infinity")
+
+
+def test_registry_lists_the_builtin_environments():
+    assert IDS == sorted(IDS)
+    for env_id in ("Pendulum-v1", "CartPole-v1", "Elastica/Tracking3D-v0",
+                   "Elastica/StructuredObstacles-v0"):
+        assert env_id in IDS
+
+
+@pytest.mark.parametrize("env_id", IDS)
+def test_gymnasium_env_checker_passes(env_id):
+    gymnasium = require_gymnasium()
+    from gymnasium.utils.env_checker import check_env
+
+    env = tendril.make(env_id)
+    assert isinstance(env, gymnasium.Env)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        check_env(env, skip_render_check=True)
+    unexpected = [str(w.message) for w in caught
+                  if not any(a in str(w.message) for a in ADVICE)]
+    assert not unexpected, unexpected
+
+
+def test_gymnasium_make_finds_tendril_ids():
+    gymnasium = require_gymnasium()
+    env = gymnasium.make("tendril/Elastica-Tracking3D-v0")
+    obs, info = env.reset(seed=3)
+    assert obs.shape == env.observation_space.shape and obs.dtype == np.float32
+    direct, _ = tendril.make("Elastica/Tracking3D-v0").reset(seed=3)
+    assert np.array_equal(obs, direct)
+    obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+    assert isinstance(info, dict) and "distance" in info
+
+
+def seeded_actions(env, count, seed):
+    env.action_space.seed(seed)
+    return [env.action_space.sample() for _ in range(count)]
+
+
+@pytest.mark.parametrize("env_id", IDS)
+def test_seeded_episode_equals_the_cpp_environment_bit_for_bit(env_id, scratch):
+    env = tendril.make(env_id)
+    limit = min(env.max_episode_steps or 1000, 2000)
+    obs, _ = env.reset(seed=11)
+    observations, rewards, flags, used = [obs], [], [], []
+    for action in seeded_actions(env, limit, seed=5):
+        obs, reward, terminated, truncated, info = env.step(action)
+        observations.append(obs)
+        rewards.append(reward)
+        flags.append((terminated, truncated))
+        used.append(np.atleast_1d(np.asarray(action, dtype=np.float32)))
+        if terminated or truncated:
+            break
+    first, steps = reference_episode(env_id, 11, np.stack(used), obs.size, scratch)
+    assert len(steps) == len(used)
+    assert np.array_equal(observations[0].view(np.uint32), first.view(np.uint32))
+    assert np.array_equal(np.stack(observations[1:]).view(np.uint32),
+                          steps["obs"].view(np.uint32))
+    assert np.array_equal(np.array(rewards).view(np.uint64), steps["reward"].view(np.uint64))
+    assert [(bool(a), bool(b)) for a, b in zip(steps["terminated"], steps["truncated"])] == flags
+
+
+def test_the_arm_scene_comes_as_numpy_arrays():
+    env = tendril.make("Elastica/Tracking3D-v0")
+    env.reset(seed=0)
+    before = env.scene()
+    arm = [rod for rod in before["rods"] if rod["role"] == "arm"][0]
+    assert arm["centreline"].ndim == 2 and arm["centreline"].shape[1] == 3
+    assert arm["centreline"].shape[0] >= 2
+    # The base is fixed at the origin and the rod starts straight up along z (1 m long).
+    assert np.allclose(arm["centreline"][0], 0.0)
+    assert math.isclose(np.linalg.norm(arm["centreline"][-1] - arm["centreline"][0]), 1.0,
+                        rel_tol=1e-6)
+    assert any(s["role"] == "target" for s in before["spheres"])
+    for _ in range(50):
+        env.step(np.ones(env.action_space.shape, dtype=np.float32))
+    after = [rod for rod in env.scene()["rods"] if rod["role"] == "arm"][0]
+    assert not np.array_equal(after["centreline"], arm["centreline"])
+    assert env.scene()["time"] > before["time"]
+
+
+def test_snapshots_repeat_the_following_steps_exactly():
+    env = tendril.make("Elastica/Tracking3D-v0")
+    env.reset(seed=2)
+    for action in seeded_actions(env, 20, seed=1):
+        env.step(action)
+    assert env.supports_snapshots
+    state = env.save_state()
+    actions = seeded_actions(env, 30, seed=9)
+    first = [env.step(a)[:2] for a in actions]
+    env.load_state(state)
+    again = [env.step(a)[:2] for a in actions]
+    for (o1, r1), (o2, r2) in zip(first, again):
+        assert np.array_equal(o1, o2) and r1 == r2
+    with pytest.raises(tendril.Error):
+        env.load_state(state[:-8])
+
+
+def test_errors_are_tendril_errors_that_name_the_problem():
+    with pytest.raises(tendril.Error, match="Elastica/NoSuchArm-v0"):
+        tendril.make("Elastica/NoSuchArm-v0")
+    with pytest.raises(tendril.Error, match="n_elementz"):
+        tendril.make("Elastica/Tracking3D-v0", n_elementz=20)
+    env = tendril.make("Elastica/Tracking3D-v0")
+    size = env.action_space.shape[0]
+    with pytest.raises(tendril.Error, match="reset"):
+        env.step(np.zeros(size, dtype=np.float32))
+    env.reset(seed=0)
+    with pytest.raises(tendril.Error, match=rf"shape \({size},\).*got shape \(3,\)"):
+        env.step(np.zeros(3, dtype=np.float32))
+    with pytest.raises(tendril.Error, match=r"got shape \(1, %d\)" % size):
+        env.step(np.zeros((1, size), dtype=np.float32))
+    bad = np.zeros(size, dtype=np.float32)
+    bad[4] = np.nan
+    with pytest.raises(tendril.Error, match="(?i)finite|nan"):
+        env.step(bad)
+    cartpole = tendril.make("CartPole-v1")
+    cartpole.reset(seed=0)
+    with pytest.raises(tendril.Error, match="Discrete"):
+        cartpole.step(np.array([0.5]))
+    with pytest.raises(tendril.Error, match="outside"):
+        cartpole.step(2)
+    assert issubclass(tendril.Error, ValueError)
+
+
+def test_the_package_works_without_gymnasium():
+    code = (
+        "import sys; sys.modules['gymnasium'] = None\n"
+        "import numpy as np, tendril\n"
+        "env = tendril.make('Pendulum-v1')\n"
+        "assert not tendril.spaces.HAVE_GYMNASIUM\n"
+        "obs, info = env.reset(seed=0)\n"
+        "a = env.action_space.sample()\n"
+        "assert env.action_space.contains(a) and obs in env.observation_space\n"
+        "o, r, te, tr, i = env.step(a)\n"
+        "v = tendril.make_vec('CartPole-v1', 3)\n"
+        "o = v.reset(seed=1)[0]; assert o.shape == (3, 4)\n"
+        "print('ok', type(env).__mro__[1].__name__)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env={**os.environ, "PYTHONPATH": os.environ.get("PYTHONPATH", "")})
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ["ok", "object"]

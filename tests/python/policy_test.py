@@ -1,0 +1,114 @@
+"""tendril.load and tendril.train: a policy trained by tendril acts from Python exactly as the C++
+rl::Policy acts (deterministic and seeded stochastic actions, observation normalization
+included); errors name the file."""
+import os
+
+import numpy as np
+import pytest
+
+from conftest import SOURCE_DIR, reference, require_gymnasium, require_sb3
+
+import tendril
+
+PENDULUM = os.path.join(SOURCE_DIR, "configs", "ppo", "pendulum.yaml")
+CARTPOLE = os.path.join(SOURCE_DIR, "configs", "ppo", "cartpole.yaml")
+
+
+@pytest.fixture(scope="module")
+def pendulum_run(tmp_path_factory):
+    # A short run with observation normalization, so the policy file carries statistics.
+    run = tmp_path_factory.mktemp("runs") / "pendulum"
+    returned = tendril.train(PENDULUM, out=run, quiet=True, n_timesteps=8192, seed=3,
+                             env__normalize_observation=True, eval__freq=4096,
+                             eval__episodes=1, checkpoint_freq=0)
+    assert os.path.samefile(returned, run)
+    return run
+
+
+def recorded_observations(env_id, count, seed):
+    env = tendril.make(env_id)
+    obs, _ = env.reset(seed=seed)
+    rows = [obs]
+    env.action_space.seed(seed)
+    for _ in range(count - 1):
+        obs, _, terminated, truncated, _ = env.step(env.action_space.sample())
+        rows.append(obs)
+        if terminated or truncated:
+            obs, _ = env.reset()
+    return np.array(rows, dtype=np.float32)
+
+
+def cpp_actions(policy_file, observations, deterministic, seed, scratch):
+    obs_file, out_file = scratch / "obs.f32", scratch / "actions.f32"
+    observations.tofile(obs_file)
+    reference("act", policy_file, obs_file, int(deterministic), seed, out_file)
+    return np.fromfile(out_file, dtype="<f4")
+
+
+def test_run_files_and_policy_metadata(pendulum_run):
+    assert (pendulum_run / "model.policy").exists()
+    assert (pendulum_run / "config.yaml").read_text().count("normalize_observation: true") == 1
+    policy = tendril.load(pendulum_run)
+    assert policy.kind == "actor_critic"
+    assert policy.observation_space.shape == (3,) and policy.action_space.shape == (1,)
+
+
+@pytest.mark.parametrize("deterministic", [True, False])
+def test_actions_equal_the_cpp_policy(pendulum_run, deterministic, scratch):
+    observations = recorded_observations("Pendulum-v1", 300, seed=4)
+    policy = tendril.load(pendulum_run, seed=17)
+    rows = np.array([policy.act(o, deterministic) for o in observations])
+    expected = cpp_actions(pendulum_run / "model.policy", observations, deterministic, 17, scratch)
+    assert np.array_equal(rows.ravel().view(np.uint32), expected.view(np.uint32))
+    if deterministic:
+        # A batch goes through a matrix-matrix product (BLAS), whose sums round differently
+        # from one observation's matrix-vector product, in C++ as here: equal to float
+        # precision, not bit for bit.
+        batch = tendril.load(pendulum_run).act(observations, True)
+        assert batch.shape == (300, 1)
+        assert np.allclose(batch.ravel(), expected, rtol=1e-5, atol=1e-6)
+        # The statistics matter: without them the network's outputs would differ.
+        assert np.abs(expected).max() > 0
+
+
+def test_discrete_policy_actions_equal_the_cpp_policy(tmp_path):
+    run = tendril.train(CARTPOLE, out=tmp_path / "cartpole", quiet=True, n_timesteps=2048,
+                        eval__freq=2048, eval__episodes=1, checkpoint_freq=0)
+    policy = tendril.load(run)
+    observations = recorded_observations("CartPole-v1", 200, seed=1)
+    actions = policy.act(observations, True)
+    assert actions.dtype == np.int64 and actions.shape == (200,)
+    expected = cpp_actions(os.path.join(run, "model.policy"), observations, True, 0, tmp_path)
+    assert np.array_equal(actions, expected.astype(np.int64))
+    single = policy.act(observations[0], True)
+    assert single.shape == () and single == actions[0]
+
+
+def test_sb3_evaluate_policy_runs_a_tendril_policy(pendulum_run):
+    require_gymnasium()
+    require_sb3()
+    from stable_baselines3.common.evaluation import evaluate_policy
+
+    policy = tendril.load(pendulum_run)
+    env = tendril.make("Pendulum-v1")
+    mean, std = evaluate_policy(policy, env, n_eval_episodes=2, deterministic=True)
+    assert -2000 < mean < 0 and np.isfinite(std)
+
+
+def test_policy_errors_name_the_file(pendulum_run, tmp_path):
+    with pytest.raises(tendril.Error, match="best_model.policy"):
+        tendril.load(pendulum_run, best=True)
+    damaged = tmp_path / "damaged.policy"
+    data = bytearray((pendulum_run / "model.policy").read_bytes())
+    data[len(data) // 2] ^= 0xFF
+    damaged.write_bytes(bytes(data))
+    with pytest.raises(tendril.Error, match="damaged.policy"):
+        tendril.load(damaged)
+    policy = tendril.load(pendulum_run)
+    with pytest.raises(tendril.Error, match=r"\(3,\)"):
+        policy.act(np.zeros(4, dtype=np.float32))
+    with pytest.raises(tendril.Error, match="(?i)finite|nan"):
+        policy.act(np.array([0.0, np.nan, 0.0], dtype=np.float32))
+    with pytest.raises(tendril.Error, match="algo.no_such_key"):
+        tendril.train(PENDULUM, out=tmp_path / "never", overrides={"algo.no_such_key": 1})
+    assert not (tmp_path / "never").exists()
