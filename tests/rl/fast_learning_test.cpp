@@ -42,7 +42,7 @@ double train_and_evaluate(const std::string& name, const std::vector<std::string
 }
 
 // Measured (seed 0, this machine, the whole file in about 9 s): PPO 500 (also with seeds 1 and
-// 2), TRPO 500, SAC −151, TD3 −203, DQN 500; the thresholds leave room for other CPUs'
+// 2), TRPO 500, SAC −151, TD3 −203, DDPG −135, DQN 500; the thresholds leave room for other CPUs'
 // rounding, which changes the trajectory of a run.
 TEST(FastLearning, PpoBalancesCartPole) {
   EXPECT_GE(train_and_evaluate("ppo/cartpole.yaml", {"n_timesteps=60000"}), 300.0);
@@ -66,6 +66,13 @@ TEST(FastLearning, Td3SwingsUpPendulum) {
   EXPECT_GE(
       train_and_evaluate("td3/pendulum.yaml", {"n_timesteps=8000", "algo.learning_starts=1000",
                                                "algo.net_arch=[64, 64]", "algo.batch_size=64"}),
+      -450.0);
+}
+
+TEST(FastLearning, DdpgSwingsUpPendulum) {
+  EXPECT_GE(
+      train_and_evaluate("ddpg/pendulum.yaml", {"n_timesteps=8000", "algo.learning_starts=1000",
+                                                "algo.net_arch=[64, 64]", "algo.batch_size=64"}),
       -450.0);
 }
 
