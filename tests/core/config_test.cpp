@@ -1,6 +1,7 @@
 #include "tendril/core/config.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -38,7 +39,8 @@ steps: 1e6
 TEST(Config, UnknownKeyIsNamedWithItsPath) {
   const Config config = Config::parse("env:\n  id: x\n  n_elemnts: 20\n", "exp.yaml");
   EXPECT_EQ(config.child("env").get<std::string>("id"), "x");
-  EXPECT_EQ(error_message([&] { config.reject_unknown(); }), "exp.yaml: unknown key 'env.n_elemnts'");
+  EXPECT_EQ(error_message([&] { config.reject_unknown(); }),
+            "exp.yaml: unknown key 'env.n_elemnts'");
 }
 
 TEST(Config, WrongTypeNamesKeyAndExpectedType) {
@@ -82,7 +84,8 @@ TEST(Config, DumpRoundTrips) {
 TEST(Config, LoadFileReportsMissingFile) {
   EXPECT_EQ(error_message([] { Config::load_file("/nonexistent/exp.yaml"); }),
             "/nonexistent/exp.yaml: cannot open config file");
-  const auto file = std::filesystem::temp_directory_path() / "tendril_config_test.yaml";
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("tendril_config_test_" + std::to_string(::getpid()) + ".yaml");
   std::ofstream(file) << "n: 7\n";
   EXPECT_EQ(Config::load_file(file).get<int>("n"), 7);
   std::filesystem::remove(file);

@@ -16,7 +16,8 @@ TEST(Rng, SameSeedAndStreamGiveSameSequence) {
 TEST(Rng, StreamsAndSeedsDiffer) {
   std::set<uint64_t> first_values;
   for (uint64_t seed = 0; seed < 4; ++seed) {
-    for (uint64_t stream = 0; stream < 4; ++stream) first_values.insert(Rng(seed, stream).next_u64());
+    for (uint64_t stream = 0; stream < 4; ++stream)
+      first_values.insert(Rng(seed, stream).next_u64());
   }
   EXPECT_EQ(first_values.size(), 16u);
   Rng base(7);
@@ -47,8 +48,34 @@ TEST(Rng, UniformAndNormalMoments) {
 TEST(Rng, BelowIsUnbiasedAndInRange) {
   Rng rng(5);
   std::array<int, 3> counts{};
-  for (int i = 0; i < 30000; ++i) counts[rng.below(3)]++;
+  for (int i = 0; i < 30000; ++i) {
+    const uint64_t k = rng.below(3);
+    ASSERT_LT(k, 3u);
+    counts[k]++;
+  }
   for (int c : counts) EXPECT_NEAR(c, 10000, 400);
+}
+
+// With n = 3 · 2⁶², a plain `next_u64() % n` would put [0, 2⁶²) twice as often as the rest (half
+// of the draws instead of a third); rejection sampling keeps it uniform. Here the rejection
+// threshold is n itself, so each result is the first raw draw below n.
+TEST(Rng, BelowRejectsTheBiasedTailForLargeRanges) {
+  const uint64_t n = 3ull << 62;
+  Rng rng(6), raw(6);
+  int low = 0;
+  const int draws = 4000;
+  for (int i = 0; i < draws; ++i) {
+    const uint64_t k = rng.below(n);
+    ASSERT_LT(k, n);
+    uint64_t x;
+    do {
+      x = raw.next_u64();
+    } while (x >= n);
+    ASSERT_EQ(k, x) << "draw " << i;
+    low += k < (1ull << 62);
+  }
+  // A third below 2⁶² (standard error 0.0075); the modulo bias would give a half.
+  EXPECT_NEAR(static_cast<double>(low) / draws, 1.0 / 3.0, 0.04);
 }
 
 TEST(Rng, StateRoundTripRestoresSequence) {

@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "support/error_message.hpp"
+#include "support/scratch_directory.hpp"
 #include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 
@@ -14,14 +17,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_directory(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / ("tendril_" + name);
-  fs::remove_all(directory);
-  return directory;
+using testing::error_message;
+
+// TFRecord's checksum of a record length: the CRC-32C rotated right by 15 bits plus 0xa282ead8.
+uint32_t masked_crc(const void* data, std::size_t size) {
+  const uint32_t crc = crc32c(data, size);
+  return ((crc >> 15) | (crc << 17)) + 0xA282EAD8u;
 }
 
+// A scratch directory of the test's own (unique to the process, removed afterwards).
+class ScalarLogFiles : public testing::ScratchDirectoryTest {
+ protected:
+  ScalarLogFiles() : ScratchDirectoryTest("scalar_log") {}
+  fs::path fresh_directory(const std::string& name) const { return directory_ / name; }
+};
+
 std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
+  std::ifstream in(file, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
@@ -31,7 +43,7 @@ TEST(Crc32c, KnownCheckValue) {
   EXPECT_EQ(crc32c("", 0), 0u);
 }
 
-TEST(ScalarLog, WritesCsvWithWideningHeaderAndEvents) {
+TEST_F(ScalarLogFiles, WritesCsvWithWideningHeaderAndEvents) {
   const fs::path directory = fresh_directory("scalar_log");
   fs::path events;
   {
@@ -59,7 +71,7 @@ TEST(ScalarLog, WritesCsvWithWideningHeaderAndEvents) {
   EXPECT_FLOAT_EQ(scalars[4].value, 0.0125f);
 }
 
-TEST(ScalarLog, ResumeAppendsToTheExistingCsv) {
+TEST_F(ScalarLogFiles, ResumeAppendsToTheExistingCsv) {
   const fs::path directory = fresh_directory("scalar_log_resume");
   {
     ScalarLog log(directory);
@@ -75,7 +87,7 @@ TEST(ScalarLog, ResumeAppendsToTheExistingCsv) {
   EXPECT_EQ(read_text(directory / "progress.csv"), "a,b\n1,\n2,3\n");
 }
 
-TEST(ScalarLog, CorruptEventFileIsRejected) {
+TEST_F(ScalarLogFiles, CorruptEventFileIsRejected) {
   const fs::path directory = fresh_directory("scalar_log_corrupt");
   fs::path events;
   {
@@ -84,12 +96,31 @@ TEST(ScalarLog, CorruptEventFileIsRejected) {
     log.dump(1);
     events = log.event_path();
   }
-  std::string bytes = read_text(events);
-  bytes[bytes.size() - 6] ^= 0x40;  // flip a bit inside the last record's payload
-  std::ofstream(events, std::ios::binary) << bytes;
-  EXPECT_THROW(read_event_scalars(events), Error);
+  const std::string bytes = read_text(events);
+  // A flipped bit inside the last record's payload fails its CRC.
+  std::string flipped = bytes;
+  flipped[flipped.size() - 6] ^= 0x40;
+  std::ofstream(events, std::ios::binary) << flipped;
+  EXPECT_NE(error_message([&] { read_event_scalars(events); }).find("corrupt record"),
+            std::string::npos);
+  // The intact file cut short inside its last record, and inside a record header.
   std::ofstream(events, std::ios::binary) << bytes.substr(0, bytes.size() - 3);
-  EXPECT_THROW(read_event_scalars(events), Error);
+  EXPECT_NE(error_message([&] { read_event_scalars(events); }).find("truncated record"),
+            std::string::npos);
+  std::ofstream(events, std::ios::binary) << bytes + bytes.substr(0, 7);
+  EXPECT_NE(error_message([&] { read_event_scalars(events); }).find("truncated record header"),
+            std::string::npos);
+  // A record length beyond the file (with a valid length CRC) is a truncation, not a wrap-around.
+  std::string huge = bytes;
+  const uint64_t length = ~uint64_t{0} - 8;
+  std::memcpy(huge.data(), &length, 8);
+  const uint32_t length_crc = masked_crc(&length, 8);
+  std::memcpy(huge.data() + 8, &length_crc, 4);
+  std::ofstream(events, std::ios::binary) << huge;
+  EXPECT_NE(error_message([&] { read_event_scalars(events); }).find("truncated record"),
+            std::string::npos);
+  std::ofstream(events, std::ios::binary) << bytes;
+  EXPECT_EQ(read_event_scalars(events).size(), 1u);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "rod_test_support.hpp"
@@ -62,8 +63,8 @@ TEST(Contact, PenaltyPlaneSettlesWhereStiffnessBalancesWeight) {
   const double lowest = settle_tracking_height(rod, 10.0);
   const double expected = expected_penalty_penetration(spec, wall.stiffness);
   for (int j = 0; j <= spec.n_elements; ++j) {
-    const double penetration = rod.state().radii[std::min(j, spec.n_elements - 1)] -
-                               rod.state().positions(2, j);
+    const double penetration =
+        rod.state().radii[std::min(j, spec.n_elements - 1)] - rod.state().positions(2, j);
     EXPECT_NEAR(penetration, expected, 0.02 * expected) << "node " << j;
   }
   EXPECT_GT(lowest, 0.0) << "the centreline passed through the plane";
@@ -73,7 +74,8 @@ TEST(Contact, SeedWallCancelsThePushAndHoldsTheRodAtTheSurface) {
   const RodSpec spec = lying_rod();
   Rod rod(spec);
   rod.add<Gravity>(Eigen::Vector3d(0, 0, -kGravity));
-  rod.add<PlaneContact>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), SoftWall{8.0e4, 4.0, true});
+  rod.add<PlaneContact>(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(),
+                        SoftWall{8.0e4, 4.0, true});
   add_uniform_damping(rod, 20.0);
   const double lowest = settle_tracking_height(rod, 2.0);
   // With −F_push the wall balances the weight itself; the rod rests on the surface.
@@ -89,9 +91,9 @@ TEST(Contact, PenaltyCylinderBeneathParallelRod) {
   rod.add<Gravity>(Eigen::Vector3d(0, 0, -kGravity));
   const SoftWall wall{1.0e3, 2.0, false};
   // Axis along x under the rod, longer than it: a parallel-segment contact on every element.
-  rod.add<CylinderContact>(
-      std::vector<Cylinder>{{Eigen::Vector3d(-0.5, 0, 0), Eigen::Vector3d::UnitX(), 2.0, cylinder_radius}},
-      wall);
+  rod.add<CylinderContact>(std::vector<Cylinder>{{Eigen::Vector3d(-0.5, 0, 0),
+                                                  Eigen::Vector3d::UnitX(), 2.0, cylinder_radius}},
+                           wall);
   add_uniform_damping(rod, 20.0);
   ASSERT_TRUE(settle(rod, 10.0, 1e-7));
   const double expected = expected_penalty_penetration(spec, wall.stiffness);
@@ -119,14 +121,18 @@ TEST(Contact, FastRodDoesNotPassThroughThinCylinder) {
       closest = std::min(closest, (points.on_first - points.on_second).norm());
     }
   }
-  EXPECT_GT(closest, pole.radius) << "the centreline entered the cylinder";
+  // The surfaces touch when the centrelines are pole + rod radius (8 cm) apart; the soft wall
+  // lets the rod sink in by less than a centimetre.
+  std::printf("closest centreline distance %.5f m\n", closest);
+  EXPECT_GT(closest, pole.radius + spec.radius - 0.01) << "the rod sank deep into the cylinder";
   EXPECT_GT(rod.state().velocities.row(2).mean(), 0.0) << "the rod should bounce back up";
 }
 
 TEST(Contact, ClosestPointsBetweenSegments) {
   // Crossing segments at right angles, one above the other.
-  ClosestPoints p = closest_points_between_segments(Eigen::Vector3d(-1, 0, 1), Eigen::Vector3d(1, 0, 1),
-                                                    Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, 1, 0));
+  ClosestPoints p =
+      closest_points_between_segments(Eigen::Vector3d(-1, 0, 1), Eigen::Vector3d(1, 0, 1),
+                                      Eigen::Vector3d(0, -1, 0), Eigen::Vector3d(0, 1, 0));
   EXPECT_LT((p.on_first - Eigen::Vector3d(0, 0, 1)).norm(), 1e-15);
   EXPECT_LT((p.on_second - Eigen::Vector3d(0, 0, 0)).norm(), 1e-15);
   // Beyond the end of the second segment: clamped to its end point.
@@ -142,9 +148,11 @@ TEST(Contact, ClosestPointsBetweenSegments) {
 
 TEST(Contact, InvalidWallsAndCylindersAreRejected) {
   EXPECT_THROW(PlaneContact(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 2)), Error);
-  EXPECT_THROW(PlaneContact(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), SoftWall{-1.0, 4.0, true}),
+  EXPECT_THROW(
+      PlaneContact(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), SoftWall{-1.0, 4.0, true}),
+      Error);
+  EXPECT_THROW(CylinderContact({{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 1.0, 0.0}}),
                Error);
-  EXPECT_THROW(CylinderContact({{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 1.0, 0.0}}), Error);
 }
 
 }  // namespace

@@ -62,14 +62,25 @@ TEST(Boundary, GeneralConstraintHoldsChosenTranslations) {
   spec.youngs_modulus = 1e6;
   spec.time_step = 1e-4;
   Rod rod(spec);
-  // Pin both ends' heights only: the rod sags between them but its ends stay at z = 0.
+  // Pin both ends' heights only: the rod sags between them but its ends stay at z = 0, while
+  // it slides freely along x and y (launched at 0.1 m/s along x and −0.05 m/s along y).
   rod.add<GeneralConstraint>(0, std::array<bool, 3>{false, false, true}, 0, std::array<bool, 3>{});
   rod.add<GeneralConstraint>(10, std::array<bool, 3>{false, false, true}, 9, std::array<bool, 3>{});
   rod.add<Gravity>(Eigen::Vector3d(0, 0, -9.81));
-  ASSERT_TRUE(rod.advance(2000));
+  rod.mutable_state().velocities.row(0).setConstant(0.1);
+  rod.mutable_state().velocities.row(1).setConstant(-0.05);
+  rod.state_changed();
+  ASSERT_TRUE(rod.advance(2000));  // 0.2 s: 2 cm along x, −1 cm along y
   EXPECT_EQ(rod.state().positions(2, 0), 0.0);
   EXPECT_EQ(rod.state().positions(2, 10), 0.0);
   EXPECT_LT(rod.state().positions(2, 5), -1e-4);
+  // The sag also draws the ends inwards by equal amounts; their mean x moves with the launch.
+  const double start_x = rod.state().positions(0, 0);
+  const double end_x = rod.state().positions(0, 10) - rod.model().rest_lengths.sum();
+  EXPECT_NEAR(0.5 * (start_x + end_x), 0.02, 2e-3);
+  EXPECT_GT(start_x, 0.02);  // inwards, on top of the launch
+  EXPECT_LT(end_x, 0.02);
+  for (int j : {0, 10}) EXPECT_NEAR(rod.state().positions(1, j), -0.01, 1e-3) << "node " << j;
 }
 
 TEST(Boundary, FixedEndWithGivenFrameClampsIt) {

@@ -117,5 +117,32 @@ TEST(SplineActuation, SeedControlPointPositions) {
   EXPECT_THROW(SplineActuation{actuation}, Error);
 }
 
+// The control points where the Elastica paper's case 3 puts them, at 0.4 L and 0.9 L: knots
+// (0, 0.4, 0.9, 1) with the ends pinned at 0, four knots, so again the single cubic through them.
+// Values (1, 0): p(s) = c s (s − 0.9)(s − 1) with p(0.4) = 0.12 c = 1, c = 25/3.
+// Values (0, −0.5): q(s) = c s (s − 0.4)(s − 1) with q(0.9) = −0.045 c = −0.5, c = 100/9.
+// Uniform knots at 1/3 and 2/3 would give other couples (51.6 instead of 45 at s = 0.1).
+TEST(SplineActuation, CustomControlPointPositionsShapeTheCouples) {
+  RodSpec spec;
+  spec.n_elements = 10;
+  Rod rod(spec);
+  SplineActuationSpec actuation;
+  actuation.control_points = 2;
+  actuation.positions = {0.4, 0.9};
+  actuation.directions = {true, false, true};
+  actuation.max_torque = 75.0;
+  auto& muscles = rod.add<SplineActuation>(actuation);
+  muscles.set_targets(Eigen::Vector4d(1.0, 0.0, 0.0, -0.5));
+  for (int i = 0; i < 10; ++i) {
+    const double s = (i + 1) / 10.0;  // distal end of element i, as a fraction of the length
+    const double normal = 25.0 / 3.0 * s * (s - 0.9) * (s - 1.0);
+    const double twist = 100.0 / 9.0 * s * (s - 0.4) * (s - 1.0);
+    EXPECT_NEAR(muscles.couples()(0, i), 75.0 * normal, 1e-12) << "element " << i;
+    EXPECT_NEAR(muscles.couples()(2, i), 75.0 * twist, 1e-12) << "element " << i;
+  }
+  EXPECT_NEAR(muscles.couples()(0, 0), 45.0, 1e-12);
+  EXPECT_NEAR(muscles.couples()(0, 3), 75.0, 1e-12);  // at the control point: its value · 75
+}
+
 }  // namespace
 }  // namespace tendril::physics

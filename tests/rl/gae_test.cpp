@@ -105,17 +105,37 @@ TEST(RolloutBuffer, StoresTimeMajorAndMatchesComputeGae) {
                Error);
 }
 
-TEST(RolloutBuffer, ExplainedVariance) {
-  RolloutBuffer buffer(2, 1, 1, 1);
+// A finished one-env buffer in which every step ends its episode, so the value targets are the
+// rewards themselves: returns R = r, predictions V = v.
+RolloutBuffer one_step_episodes(const std::vector<float>& rewards,
+                                const std::vector<float>& values) {
+  const auto n = static_cast<int64_t>(rewards.size());
+  RolloutBuffer buffer(n, 1, 1, 1);
   const RolloutBuffer::RowMatrix observation = RolloutBuffer::RowMatrix::Zero(1, 1);
-  for (int t = 0; t < 2; ++t) {
-    buffer.add(observation, Eigen::MatrixXf::Zero(1, 1), Eigen::VectorXf::Constant(1, 1.0f + t),
-               Eigen::VectorXf::Constant(1, 0.0f), Eigen::VectorXf::Zero(1), {1}, {0},
+  for (int64_t t = 0; t < n; ++t) {
+    buffer.add(observation, Eigen::MatrixXf::Zero(1, 1), Eigen::VectorXf::Constant(1, rewards[t]),
+               Eigen::VectorXf::Constant(1, values[t]), Eigen::VectorXf::Zero(1), {1}, {0},
                Eigen::VectorXf::Zero(1));
   }
   buffer.finish(Eigen::VectorXf::Zero(1), 0.99, 0.95);
+  EXPECT_TRUE(buffer.returns().isApprox(Eigen::Map<const Eigen::VectorXf>(rewards.data(), n)));
+  return buffer;
+}
+
+// 1 − Var[R − V] / Var[R] (population variances, as numpy.var in SB3's explained_variance).
+TEST(RolloutBuffer, ExplainedVariance) {
   // Values 0 predict nothing of returns (1, 2).
-  EXPECT_NEAR(explained_variance(buffer), 0.0, 1e-9);
+  EXPECT_NEAR(explained_variance(one_step_episodes({1, 2}, {0, 0})), 0.0, 1e-9);
+  // Perfect predictions, and predictions off by a constant, explain everything.
+  EXPECT_NEAR(explained_variance(one_step_episodes({1, 2, 4}, {1, 2, 4})), 1.0, 1e-12);
+  EXPECT_NEAR(explained_variance(one_step_episodes({1, 2, 4}, {4, 5, 7})), 1.0, 1e-12);
+  // R = (1, 2, 3, 4), V = (0, 2, 2, 5): R − V = (1, 0, 1, −1) with variance 0.6875; Var R =
+  // 1.25; 1 − 0.55 = 0.45.
+  EXPECT_NEAR(explained_variance(one_step_episodes({1, 2, 3, 4}, {0, 2, 2, 5})), 0.45, 1e-7);
+  // V = −R: Var[2R] = 4 Var R, so −3: worse than predicting a constant.
+  EXPECT_NEAR(explained_variance(one_step_episodes({1, 2, 3}, {-1, -2, -3})), -3.0, 1e-9);
+  // Constant returns have nothing to explain: 0 by convention (SB3 reports NaN).
+  EXPECT_EQ(explained_variance(one_step_episodes({2, 2}, {0, 1})), 0.0);
 }
 
 }  // namespace

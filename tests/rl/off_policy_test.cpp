@@ -2,8 +2,11 @@
 // replay buffer, timeouts in the buffer, and bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "support/error_message.hpp"
 #include "tendril/envs/registry.hpp"
@@ -221,28 +224,61 @@ TEST(OffPolicyThreads, TwoLearnerThreadsRepeatTheRunExactly) {
   EXPECT_EQ(actions[0], actions[1]);
 }
 
+// One Pendulum-v1 step (Gymnasium's dynamics: g = 10, m = l = 1, dt = 0.05, semi-implicit Euler,
+// speed clipped to ±8) from an observation (cos θ, sin θ, θ̇) under a torque.
+Eigen::Vector3d pendulum_step(const Eigen::Vector3f& observation, double torque) {
+  const double theta = std::atan2(observation[1], observation[0]);
+  const double theta_dot =
+      std::clamp(observation[2] + (15.0 * std::sin(theta) + 3.0 * torque) * 0.05, -8.0, 8.0);
+  const double next = theta + theta_dot * 0.05;
+  return {std::cos(next), std::sin(next), theta_dot};
+}
+
 TEST(OffPolicyBuffer, TruncatedEpisodesAreStoredAsNotTerminatedWithTheirFinalObservation) {
   auto env = vec_env("Pendulum-v1", "max_episode_steps: 50");
   Sac sac(*env, SacConfig::from_config(Config::parse("learning_starts: 1000\n")), 0);
   sac.learn(120);  // warm-up only: random actions, 2 episodes cut by the time limit
   const ReplayBuffer& buffer = sac.replay_buffer();
   ASSERT_EQ(buffer.size(), 120);
-  for (int64_t i = 0; i < buffer.size(); ++i) EXPECT_FALSE(buffer.terminated(i)) << i;
-  // Within an episode, next observation i is observation i + 1; at the cut it is the final
-  // observation, not the first of the next episode.
-  EXPECT_EQ(buffer.next_observation(10), buffer.observation(11));
-  EXPECT_NE(buffer.next_observation(49), buffer.observation(50));
-  const float cos = buffer.next_observation(49)[0], sin = buffer.next_observation(49)[1];
-  EXPECT_NEAR(cos * cos + sin * sin, 1.0f, 1e-5f);  // a genuine Pendulum state
+  for (int64_t i = 0; i < buffer.size(); ++i) {
+    EXPECT_FALSE(buffer.terminated(i)) << i;
+    // Every next observation is one Pendulum step from its observation under its action (in
+    // [−1, 1], so 2 N·m per unit), at the cuts too: there it is the episode's final state.
+    const Eigen::Vector3d expected =
+        pendulum_step(buffer.observation(i), 2.0 * buffer.action(i)[0]);
+    EXPECT_LT((buffer.next_observation(i).cast<double>() - expected).cwiseAbs().maxCoeff(), 1e-5)
+        << "transition " << i;
+    // Within an episode, next observation i is observation i + 1; at the cuts (49, 99) the
+    // next episode starts from a fresh reset instead.
+    if (i + 1 < buffer.size()) {
+      if (i == 49 || i == 99) {
+        EXPECT_NE(buffer.next_observation(i), buffer.observation(i + 1)) << i;
+      } else {
+        EXPECT_EQ(buffer.next_observation(i), buffer.observation(i + 1)) << i;
+      }
+    }
+  }
 }
 
+// CartPole ends when |x| > 2.4 m or |θ| > 12°: the terminated flag must sit exactly on the
+// transitions whose next observation is out of those bounds, after which a new episode starts.
 TEST(OffPolicyBuffer, TerminationsAreStoredAsTerminated) {
   auto env = vec_env("CartPole-v1", "");
   Dqn dqn(*env, DqnConfig::from_config(Config::parse("learning_starts: 1000\n")), 0);
   dqn.learn(300);
+  const ReplayBuffer& buffer = dqn.replay_buffer();
+  ASSERT_EQ(buffer.size(), 300);
   int terminated = 0;
-  for (int64_t i = 0; i < dqn.replay_buffer().size(); ++i)
-    terminated += dqn.replay_buffer().terminated(i);
+  const double max_angle = 12.0 * 2.0 * std::numbers::pi / 360.0;
+  for (int64_t i = 0; i < buffer.size(); ++i) {
+    const auto next = buffer.next_observation(i);
+    const bool outside = std::abs(next[0]) > 2.4f || std::abs(next[2]) > max_angle;
+    EXPECT_EQ(buffer.terminated(i), outside) << "transition " << i;
+    if (i + 1 < buffer.size()) {
+      EXPECT_EQ(buffer.terminated(i), next != buffer.observation(i + 1)) << "transition " << i;
+    }
+    terminated += buffer.terminated(i);
+  }
   EXPECT_GT(terminated, 3);  // random CartPole episodes fall within ~20 steps
 }
 

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "support/error_message.hpp"
+#include "support/scratch_directory.hpp"
 #include "tendril/rl/experiment.hpp"
 
 namespace tendril::rl {
@@ -13,8 +14,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write_files(const std::string& name, const std::string& sweep) {
-  const fs::path folder = fs::temp_directory_path() / ("tendril_sweep_" + name);
+// The files go into a scratch directory of the test's own, removed afterwards.
+class Sweeps : public testing::ScratchDirectoryTest {
+ protected:
+  Sweeps() : ScratchDirectoryTest("sweep") {}
+  fs::path write_files(const std::string& name, const std::string& sweep) const;
+};
+
+fs::path Sweeps::write_files(const std::string& name, const std::string& sweep) const {
+  const fs::path folder = directory_ / name;
   fs::create_directories(folder / "sweeps");
   std::ofstream(folder / "base.yaml")
       << "algorithm: ppo\nenv: {id: Pendulum-v1, n_envs: 2}\nalgo: {n_steps: 64}\n"
@@ -23,7 +31,7 @@ fs::path write_files(const std::string& name, const std::string& sweep) {
   return folder / "sweeps" / "grid.yaml";
 }
 
-TEST(Sweep, RunsAreTheGridsProductFirstKeySlowest) {
+TEST_F(Sweeps, RunsAreTheGridsProductFirstKeySlowest) {
   const Sweep sweep = Sweep::load(write_files("product",
                                               "experiment: ../base.yaml\n"
                                               "grid:\n"
@@ -41,8 +49,8 @@ TEST(Sweep, RunsAreTheGridsProductFirstKeySlowest) {
   EXPECT_EQ(experiment.env.n_envs, 2);
 }
 
-TEST(Sweep, BadFilesAreRejectedByName) {
-  const auto error = [](const std::string& name, const std::string& text) {
+TEST_F(Sweeps, BadFilesAreRejectedByName) {
+  const auto error = [this](const std::string& name, const std::string& text) {
     return testing::error_message([&] { Sweep::load(write_files(name, text)); });
   };
   EXPECT_NE(error("unknown",

@@ -175,7 +175,7 @@ struct Reader {
   const std::string& where;
 
   void need(std::size_t count) const {
-    if (at + count > end) throw Error("truncated protobuf message", where);
+    if (count > end - at) throw Error("truncated protobuf message", where);  // at ≤ end
   }
   uint64_t varint() {
     uint64_t value = 0;
@@ -203,11 +203,16 @@ struct Reader {
     return inner;
   }
   void skip(int wire_type) {
-    if (wire_type == 0) varint();
-    else if (wire_type == 1) fixed<uint64_t>();
-    else if (wire_type == 2) sub();
-    else if (wire_type == 5) fixed<uint32_t>();
-    else throw Error("unknown protobuf wire type", where);
+    if (wire_type == 0)
+      varint();
+    else if (wire_type == 1)
+      fixed<uint64_t>();
+    else if (wire_type == 2)
+      sub();
+    else if (wire_type == 5)
+      fixed<uint32_t>();
+    else
+      throw Error("unknown protobuf wire type", where);
   }
 };
 
@@ -227,10 +232,12 @@ std::vector<EventScalar> read_event_scalars(const std::filesystem::path& file) {
     std::memcpy(&length, bytes.data() + at, 8);
     std::memcpy(&length_crc, bytes.data() + at + 8, 4);
     if (length_crc != masked_crc(&length, 8)) throw Error("corrupt record length", where);
-    if (at + 12 + length + 4 > bytes.size()) throw Error("truncated record", where);
+    const std::size_t available = bytes.size() - at - 12;  // payload and its CRC must fit here
+    if (length > available || available - length < 4) throw Error("truncated record", where);
     uint32_t data_crc;
     std::memcpy(&data_crc, bytes.data() + at + 12 + length, 4);
-    if (data_crc != masked_crc(bytes.data() + at + 12, length)) throw Error("corrupt record", where);
+    if (data_crc != masked_crc(bytes.data() + at + 12, length))
+      throw Error("corrupt record", where);
     Reader event{bytes, at + 12, at + 12 + length, where};
     at += 12 + length + 4;
     int64_t step = 0;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "tendril/core/config.hpp"
@@ -13,7 +14,8 @@
 namespace tendril::envs::elastica::testing {
 
 // A registered Elastica case as the registry builds it (inside its TimeLimit), and the case
-// itself for the test hooks.
+// itself for the test hooks. When the id does not build a `Case`, the calling test fails with an
+// exception naming it (callers use `task` straight away, so it is never null).
 template <typename Case = ElasticaArmEnv>
 struct Made {
   std::unique_ptr<Env> env;
@@ -25,7 +27,9 @@ Made<Case> make_case(const std::string& id, const std::string& params_yaml = "{}
   Made<Case> made;
   made.env = make(id, Config::parse(params_yaml));
   made.task = find_wrapper<Case>(*made.env);
-  EXPECT_NE(made.task, nullptr) << id;
+  if (made.task == nullptr) {
+    throw std::runtime_error(id + " does not build the expected Elastica case");
+  }
   return made;
 }
 

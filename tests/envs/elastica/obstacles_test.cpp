@@ -35,7 +35,9 @@ TEST(Obstacles, StructuredWallHasOneGapOfSeventeenCentimetres) {
 // SPEC M2 case 4: α, β ~ U(π/3, 2π/3), axis (cos α cos β, −sin α, cos α sin β), start
 // x ~ U(−0.55, −0.40), z ~ U(t_z − 0.5, t_z + 0.5), midpoint at the target's height.
 TEST(Obstacles, UnstructuredNestFollowsTheDrawingRule) {
+  constexpr double kPi = std::numbers::pi;
   const Eigen::Vector3d target(-0.8, 0.5, 0.35);
+  double alpha_min = kPi, alpha_max = 0.0, beta_min = kPi, beta_max = 0.0;
   for (uint64_t seed : {0ull, 1ull, 77ull}) {
     const auto nest = unstructured_nest(target, seed);
     ASSERT_EQ(nest.size(), 12u);
@@ -43,13 +45,23 @@ TEST(Obstacles, UnstructuredNestFollowsTheDrawingRule) {
       EXPECT_EQ(rod.radius, 0.03);
       EXPECT_EQ(rod.length, 1.0);
       EXPECT_NEAR(rod.axis.norm(), 1.0, 1e-14);
-      // Recover α and β from the axis and check their range.
-      const double alpha = std::asin(-rod.axis.y());  // in [π/3, π/2]; cos α sign below
-      EXPECT_GE(alpha, std::numbers::pi / 3 - 1e-12);
-      const double cos_alpha = std::hypot(rod.axis.x(), rod.axis.z());
-      EXPECT_NEAR(cos_alpha, std::cos(alpha), 1e-12);
-      // β ∈ [π/3, 2π/3] ⇒ sin β ≥ sin 60°: |axis_z| ≥ sin 60° · |cos α|.
-      EXPECT_GE(std::abs(rod.axis.z()), std::sin(std::numbers::pi / 3) * cos_alpha - 1e-12);
+      // Recover α and β from the axis: sin β > 0 on [π/3, 2π/3], so cos α has the sign of
+      // axis_z; then (axis_x, axis_z) / cos α = (cos β, sin β).
+      const double cos_alpha = std::copysign(std::hypot(rod.axis.x(), rod.axis.z()), rod.axis.z());
+      const double alpha = std::atan2(-rod.axis.y(), cos_alpha);
+      const double beta = std::atan2(rod.axis.z() / cos_alpha, rod.axis.x() / cos_alpha);
+      EXPECT_GE(alpha, kPi / 3 - 1e-12);
+      EXPECT_LE(alpha, 2 * kPi / 3 + 1e-12);
+      EXPECT_GE(beta, kPi / 3 - 1e-9);
+      EXPECT_LE(beta, 2 * kPi / 3 + 1e-9);
+      // The axis is rebuilt exactly from the recovered angles (the sign pattern of the rule).
+      const Eigen::Vector3d rebuilt(std::cos(alpha) * std::cos(beta), -std::sin(alpha),
+                                    std::cos(alpha) * std::sin(beta));
+      EXPECT_LT((rebuilt - rod.axis).norm(), 1e-12);
+      alpha_min = std::min(alpha_min, alpha);
+      alpha_max = std::max(alpha_max, alpha);
+      beta_min = std::min(beta_min, beta);
+      beta_max = std::max(beta_max, beta);
       EXPECT_GE(rod.start.x(), -0.55);
       EXPECT_LT(rod.start.x(), -0.40);
       EXPECT_GE(rod.start.z(), target.z() - 0.5);
@@ -57,6 +69,12 @@ TEST(Obstacles, UnstructuredNestFollowsTheDrawingRule) {
       EXPECT_NEAR((rod.start + 0.5 * rod.length * rod.axis).y(), target.y(), 1e-14);
     }
   }
+  // 36 uniform draws cover both angles' ranges: each extreme within 0.3 rad of its bound
+  // (a miss has probability (1 − 0.3/(π/3))³⁶ ≈ 5·10⁻⁶ per bound).
+  EXPECT_LT(alpha_min, kPi / 3 + 0.3);
+  EXPECT_GT(alpha_max, 2 * kPi / 3 - 0.3);
+  EXPECT_LT(beta_min, kPi / 3 + 0.3);
+  EXPECT_GT(beta_max, 2 * kPi / 3 - 0.3);
 }
 
 TEST(Obstacles, UnstructuredNestIsFixedBySeed) {

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::envs::elastica {
@@ -76,21 +79,52 @@ TEST(TargetMotion, AHeldTargetOutsideTheBoxStaysPut) {
 
 TEST(TargetMotion, ResetIsUniformInTheBoxAndSeeded) {
   TargetMotion motion;
+  const TargetMotion::Params& box = motion.params();
   Rng rng(9);
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  Eigen::Vector3d mean_direction = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), second = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mean_direction = Eigen::Vector3d::Zero(),
+                  direction_second = Eigen::Vector3d::Zero();
+  Eigen::Vector3d lowest = box.box_high, highest = box.box_low;
+  std::array<int, 8> octants{};
+  const Eigen::Vector3d centre = 0.5 * (box.box_low + box.box_high);
   const int draws = 20000;
   for (int i = 0; i < draws; ++i) {
     motion.reset(rng);
-    ASSERT_TRUE(inside(motion.position(), motion.params()));
+    const Eigen::Vector3d& x = motion.position();
+    ASSERT_TRUE(inside(x, box));
     ASSERT_NEAR(motion.velocity().norm(), 0.5, 1e-12);
     ASSERT_EQ(motion.updates(), 0);
-    mean += motion.position() / draws;
-    mean_direction += motion.velocity() / (0.5 * draws);
+    mean += x / draws;
+    second += x.cwiseProduct(x) / draws;
+    lowest = lowest.cwiseMin(x);
+    highest = highest.cwiseMax(x);
+    octants[(x.x() > centre.x()) + 2 * (x.y() > centre.y()) + 4 * (x.z() > centre.z())] += 1;
+    const Eigen::Vector3d direction = motion.velocity() / 0.5;
+    mean_direction += direction / draws;
+    direction_second += direction.cwiseProduct(direction) / draws;
   }
   // Centre (0, 0.6, 0); the standard error of each mean is below 0.003.
-  EXPECT_LT((mean - Eigen::Vector3d(0.0, 0.6, 0.0)).cwiseAbs().maxCoeff(), 0.015);
+  EXPECT_LT((mean - centre).cwiseAbs().maxCoeff(), 0.015);
+  // U(a, b) has variance (b − a)²/12; the relative standard error of the sample variance is
+  // √(0.8/n) ≈ 0.6 %, so 4 % is over six of them.
+  const Eigen::Vector3d variance = second - mean.cwiseProduct(mean);
+  const Eigen::Vector3d expected = (box.box_high - box.box_low).array().square() / 12.0;
+  EXPECT_LT((variance.array() / expected.array() - 1.0).abs().maxCoeff(), 0.04)
+      << variance.transpose() << " vs " << expected.transpose();
+  // The draws reach all six walls (within 0.5 % of the span).
+  EXPECT_LT(((lowest - box.box_low).array() / (box.box_high - box.box_low).array()).maxCoeff(),
+            0.005);
+  EXPECT_LT(((box.box_high - highest).array() / (box.box_high - box.box_low).array()).maxCoeff(),
+            0.005);
+  // χ² over the eight octants (7 degrees of freedom; P(χ² > 30) ≈ 10⁻⁴).
+  double chi_square = 0.0;
+  for (int count : octants) chi_square += std::pow(count - draws / 8.0, 2) / (draws / 8.0);
+  EXPECT_LT(chi_square, 30.0);
+  // Directions uniform on the sphere: each component is uniform on [−1, 1] (Archimedes), mean 0
+  // and second moment 1/3 (standard error 0.002).
   EXPECT_LT(mean_direction.cwiseAbs().maxCoeff(), 0.03);
+  EXPECT_LT((direction_second.array() - 1.0 / 3.0).abs().maxCoeff(), 0.012)
+      << direction_second.transpose();
 
   TargetMotion a, b;
   Rng rng_a(5), rng_b(5);

@@ -22,17 +22,24 @@ TEST(ThreadPool, RunsEveryIndexExactlyOnceAcrossManyJobs) {
   pool.run(0, [](int) { FAIL() << "no index to run"; });
 }
 
+// A pool of two threads is the caller plus one worker: both take indices.
 TEST(ThreadPool, UsesItsWorkersAndTheCaller) {
   ThreadPool pool(2);
+  const std::thread::id caller = std::this_thread::get_id();
   std::vector<std::thread::id> ids(64);
   for (int attempt = 0; attempt < 100; ++attempt) {
     pool.run(64, [&](int i) {
       ids[i] = std::this_thread::get_id();
       std::this_thread::sleep_for(std::chrono::microseconds(50));
     });
-    if (std::set<std::thread::id>(ids.begin(), ids.end()).size() == 2) return;
+    const std::set<std::thread::id> distinct(ids.begin(), ids.end());
+    ASSERT_LE(distinct.size(), 2u);
+    if (distinct.size() == 2) {
+      EXPECT_EQ(distinct.count(caller), 1u) << "the calling thread took no index";
+      return;
+    }
   }
-  FAIL() << "the worker never took an index";
+  FAIL() << "the indices never spread over two threads";
 }
 
 TEST(ThreadPool, RethrowsATaskErrorAfterAllTasksFinish) {

@@ -48,7 +48,8 @@ TEST(NormalizeReward, ConstantRewardEpisodeMatchesHandComputedScaling) {
     returns.push_back(discounted);
     ASSERT_NEAR(step.reward, scaled_unit_reward(pooled_variance(returns)), 1e-9) << k;
     ASSERT_EQ(step.terminated, k == 5);
-    ASSERT_EQ(step.reward<10.0, k> 1) << k;  // only the first is clipped
+    const bool below_clip = step.reward < 10.0;
+    ASSERT_EQ(below_clip, k > 1) << k;  // only the first is clipped
   }
   EXPECT_NEAR(returns.back(), 1.0 + 0.99 + 0.9801 + 0.970299 + 0.96059601, 1e-12);
   EXPECT_EQ(env.discounted_return(), 0.0);  // reset at the episode's end

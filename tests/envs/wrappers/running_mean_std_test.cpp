@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "tendril/core/error.hpp"
 
@@ -56,18 +57,31 @@ TEST(RunningMeanStd, NormalizeCentresScalesAndClipsScaleOnlyScales) {
   EXPECT_DOUBLE_EQ(stats.scale(-30.0, 0.0, 10.0), -10.0);
 }
 
-TEST(RunningMeanStd, MergeEqualsFeedingAllSamplesToOne) {
-  RunningMeanStd a(2), b(2), all(2);
-  for (int i = 0; i < 6; ++i) {
-    const Eigen::Vector2d x(i * 0.5, -i * i);
-    (i < 3 ? a : b).update(x);
-    all.update(x);
-  }
+// Unequal halves (2 + 5 samples), so that a merge weighting the two sides wrongly shows. The
+// merged statistics pool both priors (count ε, mean 0, variance 1 each) with the seven samples:
+//   n = 2ε + 7,  μ = Σ x / n,  σ² = (2ε (1 + μ²) + Σ (x − μ)²) / n.
+TEST(RunningMeanStd, MergeEqualsHandPooledStatisticsOfBothSides) {
+  constexpr double eps = RunningMeanStd::kInitialCount;
+  RunningMeanStd a(2), b(2);
+  std::vector<Eigen::Vector2d> samples;
+  for (int i = 0; i < 7; ++i) samples.emplace_back(i * 0.5 + 1.0, -i * i);
+  for (int i = 0; i < 7; ++i) (i < 2 ? a : b).update(samples[i]);
   a.merge(b);
-  // Both priors are pooled in by the merge, the single stream has only one.
-  EXPECT_NEAR(a.count(), all.count() + RunningMeanStd::kInitialCount, 1e-12);
-  EXPECT_TRUE(a.mean().isApprox(all.mean(), 1e-4));
-  EXPECT_TRUE(a.var().isApprox(all.var(), 1e-4));
+  const double n = 2 * eps + 7;
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const auto& x : samples) mean += x / n;
+  Eigen::Vector2d var = 2 * eps * (Eigen::Vector2d::Ones() + mean.cwiseProduct(mean));
+  for (const auto& x : samples) var += (x - mean).cwiseProduct(x - mean);
+  var /= n;
+  EXPECT_NEAR(a.count(), n, 1e-12);
+  EXPECT_TRUE(a.mean().isApprox(mean, 1e-12)) << a.mean().transpose() << " vs " << mean.transpose();
+  EXPECT_TRUE(a.var().isApprox(var, 1e-12)) << a.var().transpose() << " vs " << var.transpose();
+  // Merging the other way round gives the same statistics.
+  RunningMeanStd c(2), d(2);
+  for (int i = 0; i < 7; ++i) (i < 2 ? c : d).update(samples[i]);
+  d.merge(c);
+  EXPECT_TRUE(d.mean().isApprox(mean, 1e-12));
+  EXPECT_TRUE(d.var().isApprox(var, 1e-12));
 }
 
 TEST(RunningMeanStd, ArrayRoundTripIsExactAndValidated) {

@@ -47,12 +47,14 @@ Minibatch random_minibatch(const nn::ActorCriticSpec& spec, const Eigen::VectorX
 // The loss as Stable-Baselines3's PPO.train computes it.
 struct AutogradLoss {
   torch::Tensor policy, value, entropy, total;
+  double approx_kl = 0.0, clip_fraction = 0.0;
 };
 AutogradLoss autograd_loss(const nn::ActorCriticSpec& spec, const torch::Tensor& theta,
                            const Minibatch& batch, const PpoLossSettings& settings) {
   const TorchActorCritic evaluation(spec, theta, batch.observations);
-  const torch::Tensor ratio =
-      torch::exp(evaluation.log_prob(batch.actions, spec.discrete) - batch.old_log_probs);
+  const torch::Tensor log_ratio =
+      evaluation.log_prob(batch.actions, spec.discrete) - batch.old_log_probs;
+  const torch::Tensor ratio = torch::exp(log_ratio);
   const torch::Tensor surrogate = torch::min(
       ratio * batch.advantages,
       torch::clamp(ratio, 1.0 - settings.clip_range, 1.0 + settings.clip_range) * batch.advantages);
@@ -66,6 +68,12 @@ AutogradLoss autograd_loss(const nn::ActorCriticSpec& spec, const torch::Tensor&
   loss.value = torch::mse_loss(predicted, batch.returns);
   loss.entropy = -evaluation.entropy(spec.discrete).mean();
   loss.total = loss.policy + settings.ent_coef * loss.entropy + settings.vf_coef * loss.value;
+  // SB3's statistics: the approximate KL ((r − 1) − log r) averaged over the minibatch (Schulman's
+  // k3 estimator) and the fraction of ratios outside the clip range.
+  const torch::Tensor fixed_log_ratio = log_ratio.detach();
+  loss.approx_kl = ((fixed_log_ratio.exp() - 1) - fixed_log_ratio).mean().item<double>();
+  loss.clip_fraction =
+      ((ratio.detach() - 1).abs() > settings.clip_range).to(torch::kDouble).mean().item<double>();
   return loss;
 }
 
@@ -111,6 +119,9 @@ void check_gradient(const nn::ActorCriticSpec& spec, const PpoLossSettings& sett
   expect_relatively_near(terms.value_loss, expected.value.item<double>(), "value loss");
   expect_relatively_near(terms.entropy_loss, expected.entropy.item<double>(), "entropy loss");
   expect_relatively_near(terms.loss, expected.total.item<double>(), "loss");
+  expect_relatively_near(terms.approx_kl, expected.approx_kl, "approximate KL");
+  EXPECT_GT(terms.approx_kl, 0.0);
+  EXPECT_DOUBLE_EQ(terms.clip_fraction, expected.clip_fraction);
   // Both branches of the clipped surrogate are exercised.
   EXPECT_GT(terms.clip_fraction, 0.1);
   EXPECT_LT(terms.clip_fraction, 0.9);

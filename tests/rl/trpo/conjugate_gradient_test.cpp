@@ -25,6 +25,10 @@ TEST(ConjugateGradient, SolvesASymmetricPositiveDefiniteSystem) {
   EXPECT_EQ(products, 1);
   const float alpha = b.dot(b) / b.dot(a * b);
   EXPECT_TRUE(one_step.isApprox(alpha * b, 1e-6f));
+  // A system already solved by x = 0 takes no product at all.
+  EXPECT_EQ(conjugate_gradient(product, Eigen::VectorXf::Zero(6), 20, 1e-10, &products),
+            Eigen::VectorXf::Zero(6));
+  EXPECT_EQ(products, 0);
 }
 
 }  // namespace

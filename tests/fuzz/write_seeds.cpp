@@ -1,0 +1,89 @@
+// Writes the binary seeds of the fuzz targets into <directory>/<target>/: a PPO checkpoint and
+// policy (archive_fuzz), a short recorded episode (episode_fuzz), an event file (event_file_fuzz,
+// with its mode byte), a replay buffer (replay_buffer_fuzz) and a progress.csv (table_fuzz),
+// each written by the code that writes them for users.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "tendril/core/episode_writer.hpp"
+#include "tendril/core/scalar_log.hpp"
+#include "tendril/rl/ppo/ppo.hpp"
+#include "tendril/rl/replay_buffer.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
+
+namespace fs = std::filesystem;
+using namespace tendril;
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s <corpus directory>\n", argv[0]);
+    return 2;
+  }
+  const fs::path root = argv[1];
+  for (const char* target :
+       {"archive_fuzz", "episode_fuzz", "event_file_fuzz", "replay_buffer_fuzz", "table_fuzz"}) {
+    fs::create_directories(root / target);
+  }
+
+  rl::VecEnvOptions options;
+  options.id = "Pendulum-v1";
+  auto env = rl::make_vec_env(options);
+  rl::Ppo ppo(*env,
+              rl::PpoConfig::from_config(Config::parse("n_steps: 16\nbatch_size: 8\n"
+                                                       "policy: {net_arch: [4]}\n")),
+              0);
+  ppo.learn(16);
+  ppo.save(root / "archive_fuzz" / "step_16.ckpt");
+  ppo.save_policy(root / "archive_fuzz" / "model.policy");
+
+  const fs::path episode = root / "episode_fuzz" / "episode.tep";
+  fs::remove(episode);
+  {
+    EpisodeWriter writer(episode, {{"env", "seed"}}, 1);
+    for (int k = 0; k <= 3; ++k) {
+      EpisodeFrame frame;
+      frame.step = k;
+      frame.scene.time = 0.05 * k;
+      frame.scene.values = {{"distance", 0.1 * k}};
+      if (k > 0) {
+        frame.reward = -0.1 * k;
+        frame.action = Action::Constant(1, 0.5f);
+        frame.info = {{"distance", 0.1 * k}};
+      }
+      frame.truncated = k == 3;
+      writer.write(frame);
+    }
+    writer.finish();
+  }
+
+  const fs::path logs = root / "logs";
+  fs::remove_all(logs);
+  {
+    ScalarLog log(logs);
+    for (int step = 1; step <= 3; ++step) {
+      log.record("rollout/ep_rew_mean", -100.0 * step);
+      log.record("train/value_loss", 0.5 / step);
+      log.dump(step * 100);
+    }
+    fs::copy_file(log.csv_path(), root / "table_fuzz" / "progress.csv",
+                  fs::copy_options::overwrite_existing);
+    for (const auto& entry : fs::directory_iterator(logs)) {
+      if (entry.path().filename().string().rfind("events.", 0) != 0) continue;
+      std::ifstream in(entry.path(), std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+      std::ofstream(root / "event_file_fuzz" / "events", std::ios::binary) << '\0' << bytes;
+    }
+  }
+  fs::remove_all(logs);
+
+  rl::ReplayBuffer buffer(64, 3, 1);
+  for (int i = 0; i < 5; ++i) {
+    const Eigen::VectorXf observation = Eigen::VectorXf::Constant(3, 0.1f * i);
+    buffer.add(observation, Eigen::VectorXf::Constant(1, 0.2f), 1.0f, observation, i == 4);
+  }
+  buffer.save(root / "replay_buffer_fuzz" / "buffer.bin");
+  return 0;
+}
