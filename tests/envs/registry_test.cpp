@@ -22,7 +22,8 @@ TEST(Registry, ListsTheBuiltinReferenceTasks) {
                 "Elastica/StructuredObstacles-v0", "Elastica/Tracking3D-v0",
                 "Elastica/UnstructuredObstacles-v0", "Identity-v0", "IdentityBox-v0",
                 "MountainCarContinuous-v0", "Pendulum-v1", "PneumaticArm/Reach-v0",
-                "PneumaticArm/Robot-v0", "SmaLimb/Robot-v0", "UR5/Reach-v0"}));
+                "PneumaticArm/Robot-v0", "Safety/DoubleIntegrator-v0", "Safety/DubinsCar-v0",
+                "SmaLimb/Robot-v0", "UR5/Reach-v0"}));
   EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
   EXPECT_EQ(builtin_registry().spec("CartPole-v1").max_episode_steps, 500);
   EXPECT_EQ(builtin_registry().spec("MountainCarContinuous-v0").max_episode_steps, 999);
@@ -40,7 +41,8 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "Elastica/OrientedReach-v0, Elastica/StructuredObstacles-v0, Elastica/Tracking3D-v0, "
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
             "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/Reach-v0, "
-            "PneumaticArm/Robot-v0, SmaLimb/Robot-v0, UR5/Reach-v0");
+            "PneumaticArm/Robot-v0, Safety/DoubleIntegrator-v0, Safety/DubinsCar-v0, "
+            "SmaLimb/Robot-v0, UR5/Reach-v0");
 }
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {
