@@ -6,6 +6,7 @@
 
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/dqn/dqn.hpp"
+#include "tendril/rl/sac/sac.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 #include "tendril/safety/safety_critic.hpp"
 
@@ -118,6 +119,36 @@ TEST(SafetyCoTrainer, LearnsTheSignOfTheSafeSetAndIsReproducible) {
   const auto again = co_train(3, 4000);
   EXPECT_TRUE(first.first == again.first);
   EXPECT_GT(first.second.first, 0.0);
+  EXPECT_LT(first.second.second, 0.0);
+}
+
+// The continuous path: a SAC safety agent beside a SAC task agent; its critic, read through
+// SacSafetyCritic (env-unit actions scaled to [−1, 1]), orders a state deep inside the safe set
+// above one that must leave it, and the same seed repeats the run exactly.
+std::pair<Eigen::VectorXf, std::pair<double, double>> co_train_sac(uint64_t seed, int64_t steps) {
+  auto env = double_integrator("horizon: 100");
+  const Config algo = Config::parse(
+      "net_arch: [32, 32]\nlearning_starts: 200\nbatch_size: 64\ngamma: 0.9\nbuffer_size: 5000");
+  rl::Sac task(*env, rl::SacConfig::from_config(algo), seed);
+  rl::Sac safety_agent(*env, rl::SacConfig::from_config(algo), seed + 1);
+  auto single = envs::make("Safety/DoubleIntegrator-v0", Config::parse("horizon: 100"));
+  const auto constraint = constraint_of(*single);
+  CoTrainingSettings settings;
+  settings.learning_starts = 200;
+  SafetyCoTrainer trainer(safety_agent, *constraint, SafetyReward(0.9), settings, steps, seed);
+  task.learn(steps, rl::Observers{&trainer});
+  EXPECT_FALSE(trainer.last_stats().empty());
+  const SacSafetyCritic critic(safety_agent.policy(), safety_agent.critics());
+  const double inside = critic.state_value(Eigen::Vector3f(0.0f, 0.0f, 0.0f));
+  const double doomed = critic.state_value(Eigen::Vector3f(1.9f, 2.8f, 0.0f));
+  return {safety_agent.critics().parameters(), {inside, doomed}};
+}
+
+TEST(SafetyCoTrainer, SacSafetyAgentLearnsAndIsReproducible) {
+  const auto first = co_train_sac(5, 3000);
+  const auto again = co_train_sac(5, 3000);
+  EXPECT_TRUE(first.first == again.first);
+  EXPECT_GT(first.second.first, first.second.second);
   EXPECT_LT(first.second.second, 0.0);
 }
 
