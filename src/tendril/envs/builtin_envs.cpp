@@ -12,6 +12,8 @@
 #include "tendril/envs/identity/identity_box.hpp"
 #include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_env.hpp"
+#include "tendril/envs/safe_control/double_integrator.hpp"
+#include "tendril/envs/safe_control/dubins_car.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
 #include "tendril/envs/ur5/ur5_reach.hpp"
 
@@ -53,6 +55,12 @@ void register_builtin_envs(Registry& registry) {
   // limit: data collection runs for hours, tasks bring their own.
   registry.add({sma_limb::SmaLimbEnv::kId, &sma_limb::SmaLimbEnv::create, std::nullopt,
                 "SMA-actuated silicone limb: throttles in, bend-sensor readings out (twin)"});
+  // The safety-filter benchmarks of seed 001 §6.4.1 (SPEC M8); each truncates at its own
+  // configured horizon T, which its observation's time entry t/T refers to.
+  registry.add({safe_control::DoubleIntegrator::kId, &safe_control::DoubleIntegrator::create,
+                std::nullopt, "double integrator kept in |x| < 2 m, |v| < 3 m/s (safety filter)"});
+  registry.add({safe_control::DubinsCar::kId, &safe_control::DubinsCar::create, std::nullopt,
+                "Dubins car to a goal past a keep-out disc (safety filter)"});
   // Seed 004 (SPEC M10): the UR5 in MuJoCo, 1000 steps of 20 ms.
   registry.add({ur5::Ur5Reach::kId, &ur5::Ur5Reach::create, ur5::Ur5Reach::kEpisodeSteps,
                 "UR5 arm reaches past an obstacle box, tool down (MuJoCo)"});

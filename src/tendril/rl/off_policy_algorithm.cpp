@@ -111,4 +111,21 @@ std::function<void()> OffPolicyAlgorithm::read_state(const ArchiveReader& reader
   };
 }
 
+TrainStats OffPolicyAlgorithm::train_on(const ReplayBuffer& buffer, int64_t gradient_steps,
+                                        double progress_remaining) {
+  require(buffer.observation_size() == buffer_.observation_size() &&
+              buffer.action_size() == buffer_.action_size(),
+          "the replay buffer's sizes differ from the algorithm's", name() + " train_on");
+  require(buffer.size() > 0, "the replay buffer is empty", name() + " train_on");
+  training_buffer_ = &buffer;
+  try {
+    TrainStats stats = train(gradient_steps, progress_remaining);
+    training_buffer_ = nullptr;
+    return stats;
+  } catch (...) {
+    training_buffer_ = nullptr;
+    throw;
+  }
+}
+
 }  // namespace tendril::rl

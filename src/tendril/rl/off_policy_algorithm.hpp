@@ -32,6 +32,14 @@ class OffPolicyAlgorithm : public Algorithm {
   const OffPolicyConfig& off_policy_config() const { return common_; }
   int64_t gradient_updates() const { return updates_; }
 
+  // `gradient_steps` updates from `buffer` instead of the algorithm's own: a critic trained
+  // beside another agent, on that agent's rollouts with rewards of its own (seed 001 §6.3.1's
+  // safety agent). The buffer must have this algorithm's observation and action sizes.
+  TrainStats train_on(const ReplayBuffer& buffer, int64_t gradient_steps,
+                      double progress_remaining);
+  // Counts one vector-env step collected elsewhere (DQN's target-update period counts them).
+  void count_external_step() { after_step(); }
+
  protected:
   OffPolicyAlgorithm(std::string name, envs::VecEnv& env, const OffPolicyConfig& common,
                      uint64_t seed);
@@ -55,7 +63,8 @@ class OffPolicyAlgorithm : public Algorithm {
   virtual void write_own_state(ArchiveWriter& writer) const = 0;
   virtual std::function<void()> read_own_state(const ArchiveReader& reader) = 0;
 
-  const ReplayBuffer& buffer() const { return buffer_; }
+  // The buffer updates sample from: the own one, or the one `train_on` was given.
+  const ReplayBuffer& buffer() const { return training_buffer_ ? *training_buffer_ : buffer_; }
   Rng& sample_rng() { return stream(Stream::kUpdates); }  // replay sampling, update-time noise
   const Space& action_space() const { return env().action_space(); }
   int observation_size() const { return env().observation_space().size(); }
@@ -73,7 +82,8 @@ class OffPolicyAlgorithm : public Algorithm {
 
   OffPolicyConfig common_;
   ReplayBuffer buffer_;
-  Eigen::MatrixXf actions_, env_action_columns_;  // action_size × n_envs
+  const ReplayBuffer* training_buffer_ = nullptr;  // set during train_on
+  Eigen::MatrixXf actions_, env_action_columns_;   // action_size × n_envs
   envs::BatchMatrix env_actions_;
   int64_t updates_ = 0;
 };

@@ -25,6 +25,8 @@ class Sac : public OffPolicyAlgorithm {
   const SacConfig& config() const { return config_; }
   const Policy& policy() const override { return policy_; }
   double entropy_coefficient() const;
+  // The twin Q critics (over [observation; action in [−1, 1]]).
+  const QCritics& critics() const { return critics_; }
 
  protected:
   void explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,

@@ -1,0 +1,92 @@
+#include "tendril/safety/co_trainer.hpp"
+
+#include <algorithm>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::safety {
+
+SafetyCoTrainer::SafetyCoTrainer(rl::OffPolicyAlgorithm& safety_agent, const Constraint& constraint,
+                                 const SafetyReward& reward, const CoTrainingSettings& settings,
+                                 int64_t total_timesteps, uint64_t seed)
+    : agent_(safety_agent),
+      constraint_(constraint),
+      reward_(reward),
+      settings_(settings),
+      total_timesteps_(total_timesteps),
+      action_space_(safety_agent.policy().action_space()),
+      buffer_(settings.buffer_size, safety_agent.policy().observation_space().size(),
+              action_space_.size()),
+      rng_(seed) {
+  require(settings.train_freq > 0 && settings.gradient_steps >= 0 &&
+              settings.unsafe_samples_per_step >= 0 && total_timesteps > 0,
+          "train_freq and total_timesteps must be positive, the counts non-negative",
+          "SafetyCoTrainer");
+}
+
+Action SafetyCoTrainer::agent_action(const Eigen::Ref<const Eigen::VectorXf>& action) const {
+  // Off-policy agents store Box actions in [−1, 1] (inverse of rl::scale_to_bounds).
+  Action stored = action;
+  if (action_space_.is_box()) {
+    for (Eigen::Index i = 0; i < stored.size(); ++i) {
+      const float low = action_space_.low()[i], high = action_space_.high()[i];
+      stored[i] = std::clamp(2.0f * (action[i] - low) / (high - low) - 1.0f, -1.0f, 1.0f);
+    }
+  }
+  return stored;
+}
+
+void SafetyCoTrainer::store(const Eigen::Ref<const Eigen::VectorXf>& observation,
+                            const Action& action, double reward,
+                            const Eigen::Ref<const Eigen::VectorXf>& next_observation,
+                            bool terminated) {
+  buffer_.add(observation, action, static_cast<float>(reward), next_observation, terminated);
+  ++stored_;
+}
+
+void SafetyCoTrainer::on_step(const rl::StepEvent& event) {
+  const auto num_envs = static_cast<int>(event.observations.rows());
+  if (gate_open_.empty()) gate_open_.assign(num_envs, 1);
+  for (int i = 0; i < num_envs; ++i) {
+    if (gate_open_[i] != 0) {
+      const Observation x = event.observations.row(i).transpose();
+      const Observation next = event.step.final_observations.row(i).transpose();
+      const bool unsafe = constraint_.unsafe(x);
+      const bool next_unsafe = constraint_.unsafe(next);
+      const double level = SafetyReward::level(constraint_.margin(x), constraint_.max_margin());
+      const double r = reward_.reward(level, constraint_.time_step(x), unsafe, next_unsafe);
+      const bool terminated = unsafe || next_unsafe || event.step.terminated[i] != 0;
+      store(x, agent_action(event.actions.row(i).transpose()), r, next, terminated);
+      if (unsafe || next_unsafe) {
+        gate_open_[i] = 0;
+        ++unsafe_entries_;
+      }
+      for (int64_t k = 0; k < settings_.unsafe_samples_per_step; ++k) {
+        const Observation sample = constraint_.sample_unsafe(rng_);
+        Action action(action_space_.size());
+        if (action_space_.is_discrete()) {
+          action[0] = static_cast<float>(rng_.below(action_space_.n()));
+        } else {
+          for (Eigen::Index j = 0; j < action.size(); ++j) {
+            action[j] = static_cast<float>(rng_.uniform(-1.0, 1.0));
+          }
+        }
+        buffer_.add(sample, action, static_cast<float>(reward_.unsafe_target()), sample, true);
+      }
+    } else {
+      ++gated_;
+    }
+    if (event.step.done(i)) gate_open_[i] = 1;
+  }
+  ++steps_;
+  agent_.count_external_step();
+  if (steps_ % settings_.train_freq == 0 && stored_ >= settings_.learning_starts &&
+      settings_.gradient_steps > 0) {
+    const double remaining = std::clamp(
+        1.0 - static_cast<double>(event.timesteps) / static_cast<double>(total_timesteps_), 0.0,
+        1.0);
+    last_stats_ = agent_.train_on(buffer_, settings_.gradient_steps, remaining);
+  }
+}
+
+}  // namespace tendril::safety

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+
+#include "tendril/core/rng.hpp"
+#include "tendril/core/space.hpp"
+#include "tendril/rl/dqn/q_greedy_policy.hpp"
+#include "tendril/rl/policy.hpp"
+#include "tendril/rl/q_critics.hpp"
+
+namespace tendril::safety {
+
+// A learned safety Q-function Q_s(x, u) and its greedy action argmax_u Q_s(x, u) (seed 001
+// eq. 6.5's π_safe), on the environment's observations and actions (env units; a Discrete
+// action is its index). V_s(x) = Q_s(x, π_safe(x)) (eq. 6.2).
+class SafetyCritic {
+ public:
+  virtual ~SafetyCritic() = default;
+  virtual double value(const Observation& observation, const Action& action) const = 0;
+  virtual Action safe_action(const Observation& observation) const = 0;
+  double state_value(const Observation& observation) const {
+    return value(observation, safe_action(observation));
+  }
+};
+
+// A SAC safety agent: Q_s is the smaller of its twin critics (as in SAC's own targets) and the
+// greedy action is the actor's mean, which the actor trains towards argmax_u Q_s. Holds a copy
+// of the critics taken at construction; the actor is borrowed.
+class SacSafetyCritic : public SafetyCritic {
+ public:
+  SacSafetyCritic(const rl::Policy& actor, const rl::QCritics& critics);
+  double value(const Observation& observation, const Action& action) const override;
+  Action safe_action(const Observation& observation) const override;
+
+ private:
+  const rl::Policy& actor_;
+  mutable rl::QCritics critics_;
+  mutable Rng unused_rng_;
+  mutable Eigen::MatrixXf inputs_;
+};
+
+// A DQN safety agent: Q_s(x, ·) is the Q-network's output; the greedy action its arg max.
+// Borrows the network's policy.
+class DqnSafetyCritic : public SafetyCritic {
+ public:
+  explicit DqnSafetyCritic(const rl::QGreedyPolicy& q_policy);
+  double value(const Observation& observation, const Action& action) const override;
+  Action safe_action(const Observation& observation) const override;
+
+ private:
+  const Eigen::MatrixXf& q_values(const Observation& observation) const;
+
+  const rl::QGreedyPolicy& q_policy_;
+  mutable nn::DenseMlp::Tape tape_;
+};
+
+}  // namespace tendril::safety

@@ -1,0 +1,76 @@
+#include "tendril/envs/safe_control/dubins_car.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::envs::safe_control {
+namespace {
+
+TEST(DubinsCar, StraightAndTurningStepsFollowTheUnicycle) {
+  DubinsCar env;
+  env.reset(0);
+  env.set_state(-1.5, -1.5, 0.0);
+  env.step(Action::Constant(1, 0.0f));
+  EXPECT_NEAR(env.state()[0], -1.5 + 1.2 * 0.05, 1e-12);
+  EXPECT_NEAR(env.state()[1], -1.5, 1e-12);
+
+  // Forty steps at ω = 2 rad/s sweep 4 rad along a circle of radius 0.6 m about (−1.5, −0.9).
+  env.set_state(-1.5, -1.5, 0.0);
+  for (int t = 0; t < 40; ++t) env.step(Action::Constant(1, 2.0f));
+  const double angle = 4.0;
+  EXPECT_NEAR(env.state()[0], -1.5 + 0.6 * std::sin(angle), 1e-9);
+  EXPECT_NEAR(env.state()[1], -0.9 - 0.6 * std::cos(angle), 1e-9);
+  EXPECT_NEAR(env.state()[2], std::remainder(angle, 2.0 * std::numbers::pi), 1e-9);
+}
+
+TEST(DubinsCar, MarginCombinesWallsAndDisc) {
+  const DubinsCar::Params p;
+  EXPECT_DOUBLE_EQ(DubinsCar::safety_margin(p, 1.5, 0.0), 0.5);
+  EXPECT_NEAR(DubinsCar::safety_margin(p, 1.9, 1.0), 0.1, 1e-12);  // 2 − 1.9 rounds
+  EXPECT_NEAR(DubinsCar::safety_margin(p, 0.3, 0.4), -0.5, 1e-15);
+  // The closed-form maximum agrees with a fine grid search over the safe square.
+  double best = -1.0;
+  for (int i = 0; i <= 800; ++i) {
+    for (int j = 0; j <= 800; ++j) {
+      best = std::max(best, DubinsCar::safety_margin(p, -2.0 + i * 0.005, -2.0 + j * 0.005));
+    }
+  }
+  EXPECT_NEAR(DubinsCar::max_safety_margin(p), best, 5e-3);
+  EXPECT_NEAR(DubinsCar::max_safety_margin(p), 2.0 - 3.0 / (1.0 + std::numbers::sqrt2), 1e-15);
+}
+
+TEST(DubinsCar, ReportsGoalCostAndTerminatesOutsideTheAbsoluteBox) {
+  DubinsCar env;
+  env.reset(0);
+  env.set_state(1.8 - 0.06, 1.8, 0.0);
+  Step step = env.step(Action::Constant(1, 0.0f));
+  EXPECT_EQ(*step.info.get("is_success"), 1.0);
+  EXPECT_NEAR(step.reward, 1.0, 1e-12);  // at the goal: bonus, no distance term
+  EXPECT_EQ(*step.info.get("unsafe"), 0.0);
+  env.set_state(0.5, 0.0, 0.0);
+  step = env.step(Action::Constant(1, 0.0f));
+  EXPECT_EQ(*step.info.get("cost"), 1.0);
+  EXPECT_FALSE(step.terminated);
+  env.set_state(2.99, 0.0, 0.0);
+  EXPECT_TRUE(env.step(Action::Constant(1, 0.0f)).terminated);
+}
+
+TEST(DubinsCar, StartsInTheLowerLeftAndRejectsBadParams) {
+  DubinsCar env;
+  for (uint64_t seed = 0; seed < 50; ++seed) {
+    const Observation o = env.reset(seed);
+    EXPECT_GE(o[0], -1.8f);
+    EXPECT_LE(o[0], -1.3f);
+    EXPECT_GE(o[3], 0.0f);  // heading in [0, π/2]
+    EXPECT_GE(o[2], 0.0f);
+  }
+  EXPECT_THROW(DubinsCar::create(Config::parse("start_high: -0.5")), Error);
+  EXPECT_THROW(DubinsCar::create(Config::parse("sped: 1")), Error);
+}
+
+}  // namespace
+}  // namespace tendril::envs::safe_control
