@@ -1,5 +1,8 @@
 #include "tendril/rl/replay_buffer.hpp"
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -39,6 +42,20 @@ ReplayBuffer::ReplayBuffer(int64_t capacity, int64_t observation_size, int64_t a
   require(capacity >= 1, "capacity must be at least 1", "rl::ReplayBuffer");
   require(observation_size >= 1 && action_size >= 1,
           "observation and action sizes must be positive", "rl::ReplayBuffer");
+  // Refused up front when it cannot fit in memory: the pages are committed only as transitions
+  // arrive, so an oversized buffer would otherwise end the process late, without a message.
+  const double bytes = static_cast<double>(capacity) *
+                       static_cast<double>(2 * observation_size + action_size + 2) * sizeof(float);
+  const double memory =
+      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  if (memory > 0.0 && bytes > memory) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "a replay buffer of %lld transitions needs %.1f GiB, more than this machine's "
+                  "%.1f GiB of memory",
+                  static_cast<long long>(capacity), bytes / (1 << 30), memory / (1 << 30));
+    throw Error(text, "algo.buffer_size");
+  }
   // Uninitialised: the pages are committed as transitions are written.
   observations_.resize(observation_size, capacity);
   next_observations_.resize(observation_size, capacity);
