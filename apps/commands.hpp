@@ -17,4 +17,7 @@ int serve_command(const std::vector<std::string>& args);
 int record_command(const std::vector<std::string>& args);
 int plot_command(const std::vector<std::string>& args);
 
+// "SIGINT", "SIGTERM": how the interruption of a run is reported.
+const char* signal_name(int signal);
+
 }  // namespace tendril::apps

@@ -49,7 +49,7 @@ int sweep_command(const std::vector<std::string>& args) {
       std::printf(
           "  interrupted by %s after %lld steps; its checkpoint holds the run\n"
           "continue with:  tendril sweep %s\n",
-          strsignal(result.interrupted), static_cast<long long>(result.timesteps),
+          signal_name(result.interrupted), static_cast<long long>(result.timesteps),
           line.positional.front().c_str());
       return 128 + result.interrupted;
     }

@@ -1,4 +1,5 @@
 // `tendril train`: run an experiment file, or resume a run.
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -12,6 +13,10 @@
 #include "tendril/rl/trainer.hpp"
 
 namespace tendril::apps {
+
+const char* signal_name(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+}
 
 namespace {
 
@@ -27,7 +32,7 @@ std::filesystem::path new_run_directory(const std::string& output) {
 int report(const rl::TrainResult& result) {
   const std::string run = result.run_directory.string();
   std::printf("%s after %lld steps in %.1f s (%.0f steps/s)\n",
-              result.finished ? "finished" : "paused", static_cast<long long>(result.timesteps),
+              result.finished ? "finished" : result.interrupted ? "interrupted" : "paused", static_cast<long long>(result.timesteps),
               result.seconds, result.steps_per_second);
   if (result.finished) {
     std::printf("final evaluation: mean return %.2f +/- %.2f\n", result.final_eval_mean,
@@ -43,7 +48,7 @@ int report(const rl::TrainResult& result) {
   std::printf("evaluations:    %s/eval.csv\n", run.c_str());
   if (result.interrupted) {
     std::printf("interrupted by %s; a checkpoint at %lld steps holds the run\n",
-                strsignal(result.interrupted), static_cast<long long>(result.timesteps));
+                signal_name(result.interrupted), static_cast<long long>(result.timesteps));
   }
   if (!result.finished) {
     std::printf("continue with:  tendril train --resume %s\n", run.c_str());

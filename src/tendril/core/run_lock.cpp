@@ -34,7 +34,12 @@ RunLock::RunLock(const std::filesystem::path& directory) : file_(directory / kFi
                 file_.string());
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     const int error = errno;
-    const std::string holder = holder_of(fd_);
+    // The holder writes its PID right after locking: give it that moment.
+    std::string holder = holder_of(fd_);
+    for (int attempt = 0; holder.empty() && attempt < 50; ++attempt) {
+      ::usleep(2000);
+      holder = holder_of(fd_);
+    }
     ::close(fd_);
     fd_ = -1;
     if (error == EWOULDBLOCK) {
