@@ -32,8 +32,10 @@ std::filesystem::path new_run_directory(const std::string& output) {
 int report(const rl::TrainResult& result) {
   const std::string run = result.run_directory.string();
   std::printf("%s after %lld steps in %.1f s (%.0f steps/s)\n",
-              result.finished ? "finished" : result.interrupted ? "interrupted" : "paused", static_cast<long long>(result.timesteps),
-              result.seconds, result.steps_per_second);
+              result.finished      ? "finished"
+              : result.interrupted ? "interrupted"
+                                   : "paused",
+              static_cast<long long>(result.timesteps), result.seconds, result.steps_per_second);
   if (result.finished) {
     std::printf("final evaluation: mean return %.2f +/- %.2f\n", result.final_eval_mean,
                 result.final_eval_std);

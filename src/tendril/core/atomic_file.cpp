@@ -1,6 +1,7 @@
 #include "tendril/core/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -73,9 +74,16 @@ void append_to_file(const std::filesystem::path& file, std::string_view bytes,
     throw Error("cannot open " + std::string(what) + " for writing: " + std::strerror(errno),
                 where);
   }
+  struct stat before {};
+  const bool sized = ::fstat(fd, &before) == 0;
   try {
     write_all(fd, bytes, what, where);
   } catch (...) {
+    // A partial append (the disk filled mid-way) is taken back: the file keeps whole rows and
+    // whole records only.
+    if (sized && ::ftruncate(fd, before.st_size) != 0) {
+      // Nothing more to do: readers drop a torn tail (core/scalar_log) on resume.
+    }
     ::close(fd);
     throw;
   }

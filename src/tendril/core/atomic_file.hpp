@@ -13,7 +13,8 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
                            std::string_view what);
 
 // Appends `bytes` to `file` (created if missing). Raises Error naming `file` and the system's
-// reason if any byte cannot be written (a full disk, an I/O error, a file size limit).
+// reason if any byte cannot be written (a full disk, an I/O error, a file size limit); a
+// partial append is then cut off again, so the file never ends in half a row.
 void append_to_file(const std::filesystem::path& file, std::string_view bytes,
                     std::string_view what);
 
