@@ -57,8 +57,16 @@ reference() {  # <dir> [extra args]
   "$T" train "$PPO" "${SET[@]}" "$@" --out "$dir" --quiet >/dev/null 2>&1 || { echo "reference run failed"; exit 1; }
 }
 
+if [ "$SCENARIO" == kill9_sac ]; then
+  # Off-policy with its replay buffer beside each checkpoint (~2 s of training).
+  PPO="$CONFIGS/sac/pendulum.yaml"
+  SET=(--set n_timesteps=6000 --set checkpoint_freq=250 --set eval.freq=1000 --set eval.episodes=2
+       --set eval.save_best=true --set save_replay_buffer=true --set "algo.net_arch=[64,64]"
+       --set algo.batch_size=64 --set algo.buffer_size=5000 --set algo.log_interval=250)
+fi
+
 case "$SCENARIO" in
-kill9)
+kill9 | kill9_sac)
   reference ref
   for trial in $(seq "$TRIALS"); do
     run=k$trial
@@ -243,6 +251,13 @@ inputs)
   expect_error "--seed expects" "$T" eval ref --seed -1
   expect_error "--seed expects" "$T" eval ref --seed 1.5
   expect_error "has finished" "$T" train --resume ref
+  # An allocation that fails names the sizes that decide it.
+  expect_error "out of memory.*algo.buffer_size = 100000000" bash -c \
+    "ulimit -v 2000000; exec '$T' train '$CONFIGS/sac/pendulum.yaml' --set algo.buffer_size=100000000 --out o10"
+  # eval.csv that cannot be written (here a directory in its place): an error, not lost rows.
+  "$T" train "$PPO" "${SET[@]}" --out unwritable --stop-at 40000 --quiet >/dev/null 2>&1
+  rm unwritable/eval.csv && mkdir unwritable/eval.csv
+  expect_error "eval.csv" "$T" train --resume unwritable --quiet
   [ -e o1 ] || [ -e o2 ] || [ -e o3 ] && fail "a refused run left a directory"
   ;;
 *)

@@ -76,19 +76,6 @@ bool unstarted_attempt(const fs::path& directory, const std::string& config_text
   return in.good() || in.eof() ? saved == config_text : false;
 }
 
-// What an allocation failure is most likely about, named as the config names it.
-std::string memory_message(const Experiment& experiment) {
-  std::string text = "out of memory building or training the run; the sizes that decide it:";
-  for (const char* key : {"buffer_size", "batch_size", "n_steps"}) {
-    if (experiment.algo.has(key)) {
-      text += std::string(" algo.") + key + " = " +
-              std::to_string(experiment.algo.get<int64_t>(key)) + ",";
-    }
-  }
-  if (experiment.algo.has("net_arch")) text += " algo.net_arch,";
-  return text + " env.n_envs = " + std::to_string(experiment.env.n_envs);
-}
-
 // One training run: the vector env, the algorithm and the observers that log, evaluate,
 // checkpoint and print (rl/training_observers).
 class Run {
@@ -178,7 +165,7 @@ TrainResult run(const Experiment& experiment, const fs::path& directory,
     Run run(experiment, directory, options, std::move(lock), resuming);
     return run.execute();
   } catch (const std::bad_alloc&) {
-    throw Error(memory_message(experiment), experiment.config.source());
+    throw Error(out_of_memory_message(experiment), experiment.config.source());
   }
 }
 
