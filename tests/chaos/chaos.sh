@@ -252,8 +252,17 @@ YAML
     pid=$!
     wait_for "sw/*/config.yaml"
     [ $((trial % 2)) -eq 0 ] && sleep "$(printf '0.%03d' $((RANDOM % 1000)))"
-    kill -9 "$pid" 2>/dev/null
-    wait "$pid" 2>/dev/null
+    if [ $((trial % 3)) -eq 0 ]; then
+      # Ctrl-C: the sweep stops after a checkpoint of the current run, with status 130.
+      kill -INT "$pid" 2>/dev/null
+      wait "$pid" 2>/dev/null
+      rc=$?
+      [ "$rc" -eq 130 ] || [ "$(ls sw/*/model.policy 2>/dev/null | wc -l)" -eq 2 ] ||
+        fail "sweep trial $trial: SIGINT gave rc=$rc"
+    else
+      kill -9 "$pid" 2>/dev/null
+      wait "$pid" 2>/dev/null
+    fi
     "$T" sweep sweep.yaml --quiet >sweep.log 2>&1 || fail "sweep trial $trial: rerun rc=$?: $(tail -2 sweep.log)"
     [ "$(ls sw/*/model.policy 2>/dev/null | wc -l)" -eq 2 ] || fail "sweep trial $trial: runs missing"
   done
