@@ -246,6 +246,7 @@ grid:
   - {key: eval.episodes, values: [2]}
   - {key: seed, values: [0, 1]}
 YAML
+  restarted=0
   for trial in $(seq "$TRIALS"); do
     rm -rf sw
     "$T" sweep sweep.yaml --quiet >/dev/null 2>&1 &
@@ -265,7 +266,10 @@ YAML
     fi
     "$T" sweep sweep.yaml --quiet >sweep.log 2>&1 || fail "sweep trial $trial: rerun rc=$?: $(tail -2 sweep.log)"
     [ "$(ls sw/*/model.policy 2>/dev/null | wc -l)" -eq 2 ] || fail "sweep trial $trial: runs missing"
+    grep -q "restarting" sweep.log && restarted=$((restarted + 1))
   done
+  echo "runs restarted after an interruption before their first checkpoint: $restarted of $TRIALS sweeps"
+  [ "$restarted" -gt 0 ] || fail "no sweep was interrupted before a first checkpoint"
   ;;
 inputs)
   expect_error() {  # <pattern> <command...>: exit status 1 and the pattern in the message

@@ -19,7 +19,9 @@ void catch_interrupts() {
   struct sigaction action = {};
   action.sa_handler = record_signal;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESETHAND;  // the second signal takes the default action
+  // The second signal takes the default action; system calls the signal lands in restart
+  // (worker threads may be reading or waiting when it arrives).
+  action.sa_flags = SA_RESETHAND | SA_RESTART;
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
 }

@@ -72,8 +72,9 @@ bool holds_nothing(const fs::path& directory) {
 bool unstarted_attempt(const fs::path& directory, const std::string& config_text) {
   if (fs::exists(directory / "model.policy") || !checkpoints(directory).empty()) return false;
   std::ifstream in(directory / "config.yaml", std::ios::binary);
+  if (!in) return false;
   const std::string saved((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return in.good() || in.eof() ? saved == config_text : false;
+  return saved == config_text;
 }
 
 // One training run: the vector env, the algorithm and the observers that log, evaluate,
