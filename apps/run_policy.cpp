@@ -14,8 +14,7 @@ namespace fs = std::filesystem;
 
 RunPolicy open_run_policy(const fs::path& run, bool best) {
   require(fs::exists(run / "config.yaml"), "not a run directory (no config.yaml)", run.string());
-  RunPolicy result{
-      rl::Experiment::from_config(Config::load_file(run / "config.yaml")), {}, {}, {}, {}};
+  RunPolicy result{rl::load_run_experiment(run), {}, {}, {}, {}};
   const rl::Experiment& experiment = result.experiment;
   const fs::path file = run / (best ? "best_model.policy" : "model.policy");
   require(!best || fs::exists(file), "no best_model.policy (the run's eval.save_best is off)",

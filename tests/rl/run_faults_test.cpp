@@ -259,6 +259,22 @@ TEST_F(RunFaults, LeftoversOfInterruptedWritesAreRemovedOnResume) {
   EXPECT_TRUE(fs::exists(run / "notes.tmp.txt"));
 }
 
+// One changed byte of config.yaml (seed: 3 → seed: 2) would resume another experiment.
+TEST_F(RunFaults, DamagedConfigIsRefusedBeforeUse) {
+  const fs::path run = fresh("damaged_config");
+  train(experiment(), run, {.stop_at = 512, .quiet = true});
+  std::string text = read_text(run / "config.yaml");
+  EXPECT_NE(text.find("\n# CRC-32C of the lines above: "), std::string::npos);
+  EXPECT_EQ(load_run_experiment(run).seed, 3u);
+  const std::size_t seed = text.find("seed: 3");
+  ASSERT_NE(seed, std::string::npos);
+  text[seed + 6] = '2';
+  write_text(run / "config.yaml", text);
+  const std::string message = testing::error_message([&] { resume(run, kQuiet); });
+  EXPECT_NE(message.find("config.yaml: damaged or edited"), std::string::npos) << message;
+  EXPECT_EQ(latest_checkpoint(run).filename(), "step_512.ckpt");
+}
+
 TEST(RunInputs, OversizedReplayBufferIsRefusedNamingTheSetting) {
   Config config = Config::parse(
       "algorithm: sac\nenv: {id: Pendulum-v1}\nn_timesteps: 100\nalgo: {buffer_size: "

@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <new>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "tendril/core/archive.hpp"
 #include "tendril/core/atomic_file.hpp"
+#include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/log.hpp"
 #include "tendril/core/run_lock.hpp"
@@ -58,6 +61,17 @@ void remove_leftovers(const fs::path& directory) {
   }
 }
 
+// config.yaml ends with a YAML comment holding the CRC-32C of the lines above it, so a damaged
+// or edited copy is refused before a resume or an evaluation uses another experiment than the
+// checkpoints beside it were trained with.
+constexpr std::string_view kChecksumLine = "# CRC-32C of the lines above: ";
+
+std::string with_checksum(const std::string& text) {
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "%08x", crc32c(text.data(), text.size()));
+  return text + std::string(kChecksumLine) + hex + "\n";
+}
+
 // Whether the directory holds nothing but its lock and leftovers of atomic writes.
 bool holds_nothing(const fs::path& directory) {
   for (const auto& entry : fs::directory_iterator(directory)) {
@@ -74,7 +88,7 @@ bool unstarted_attempt(const fs::path& directory, const std::string& config_text
   std::ifstream in(directory / "config.yaml", std::ios::binary);
   if (!in) return false;
   const std::string saved((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return saved == config_text;
+  return saved == with_checksum(config_text);
 }
 
 // One training run: the vector env, the algorithm and the observers that log, evaluate,
@@ -244,8 +258,26 @@ TrainResult train(const Experiment& experiment, const fs::path& run_directory,
     }
   }
   remove_leftovers(run_directory);
-  write_file_atomically(run_directory / "config.yaml", config_text, "config.yaml");
+  write_file_atomically(run_directory / "config.yaml", with_checksum(config_text), "config.yaml");
   return run(experiment, run_directory, options, std::move(lock), /*resuming=*/false);
+}
+
+Experiment load_run_experiment(const fs::path& run_directory) {
+  const fs::path file = run_directory / "config.yaml";
+  require(fs::exists(file), "not a run directory (no config.yaml)", run_directory.string());
+  const Config config = Config::load_file(file);  // bounded, and refuses what is not a file
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.rfind(kChecksumLine);
+  if (at != std::string::npos && (at == 0 || text[at - 1] == '\n')) {
+    if (with_checksum(text.substr(0, at)) != text) {
+      throw Error(
+          "damaged or edited since the run started (its checksum line does not match); "
+          "the checkpoints beside it belong to the experiment it held",
+          file.string());
+    }
+  }
+  return Experiment::from_config(config);
 }
 
 TrainResult resume(const fs::path& run_directory, const TrainOptions& options) {
@@ -259,7 +291,7 @@ TrainResult resume(const fs::path& run_directory, const TrainOptions& options) {
         "was changed; start a new run to train longer",
         run_directory.string());
   }
-  const Experiment experiment = Experiment::from_config(Config::load_file(config_file));
+  const Experiment experiment = load_run_experiment(run_directory);
   return run(experiment, run_directory, options, std::move(lock), /*resuming=*/true);
 }
 

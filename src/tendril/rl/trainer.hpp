@@ -65,6 +65,10 @@ TrainResult train(const Experiment& experiment, const std::filesystem::path& run
 // present) is refused and left unchanged.
 TrainResult resume(const std::filesystem::path& run_directory, const TrainOptions& options = {});
 
+// The experiment of a run, from its config.yaml (which ends with a comment holding its CRC-32C:
+// a damaged or edited file raises Error instead of resuming or evaluating another experiment).
+Experiment load_run_experiment(const std::filesystem::path& run_directory);
+
 // The newest checkpoint in a run directory; raises Error if there is none.
 std::filesystem::path latest_checkpoint(const std::filesystem::path& run_directory);
 // The checkpoints of a run directory, newest first.
