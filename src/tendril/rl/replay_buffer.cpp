@@ -114,6 +114,15 @@ void ReplayBuffer::load(const std::filesystem::path& file) {
   const std::string where = file.string();
   std::ifstream stream(file, std::ios::binary);
   require(stream.good(), "cannot open replay buffer file", where);
+  // Never read more than a full buffer of this shape can take (a damaged or foreign file).
+  std::error_code error;
+  const uintmax_t file_bytes = std::filesystem::file_size(file, error);
+  const double largest = static_cast<double>(kHeaderWords + 2) * sizeof(int64_t) +
+                         static_cast<double>(capacity_) *
+                             static_cast<double>(2 * observation_size() + action_size() + 2) *
+                             sizeof(float);
+  require(!error && static_cast<double>(file_bytes) <= largest,
+          "replay buffer file is larger than a buffer of this capacity", where);
   const std::string bytes((std::istreambuf_iterator<char>(stream)),
                           std::istreambuf_iterator<char>());
   const std::size_t header_bytes = sizeof kMagic + kHeaderWords * sizeof(int64_t);

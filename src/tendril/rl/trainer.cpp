@@ -216,7 +216,8 @@ fs::path newest_intact_checkpoint(const fs::path& run_directory, bool needs_buff
     try {
       const ArchiveReader verified(file, "checkpoint");
       if (needs_buffer && !fs::exists(buffer_path(file))) {
-        throw Error("its replay buffer " + buffer_path(file).filename().string() + " is missing",
+        throw Error("its replay buffer " + buffer_path(file).filename().string() +
+                        " is missing (only the newest checkpoint keeps one)",
                     file.string());
       }
       if (skipped) *skipped = reasons;
