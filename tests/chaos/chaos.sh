@@ -70,6 +70,7 @@ fi
 case "$SCENARIO" in
 kill9 | kill9_sac)
   reference ref
+  stale=0
   for trial in $(seq "$TRIALS"); do
     run=k$trial
     "$T" train "$PPO" "${SET[@]}" --out "$run" --quiet >/dev/null 2>&1 &
@@ -88,7 +89,10 @@ kill9 | kill9_sac)
       wait "$pid" 2>/dev/null
     fi
     finish "$run" && same_run "$run" ref
+    grep -q "taking over .*$run: its lock names process" "$run.log" 2>/dev/null && stale=$((stale + 1))
   done
+  echo "stale locks of killed processes reported on resume: $stale of $TRIALS runs"
+  [ "$stale" -gt 0 ] || fail "no stale lock was reported"
   ;;
 killtmp)
   # kill -9 while a checkpoint or replay buffer is being written (its temporary file exists).

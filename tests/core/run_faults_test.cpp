@@ -42,6 +42,7 @@ TEST_F(RunFaults, SecondLockIsRefusedNamingTheHolder) {
   EXPECT_NE(message.find("in use by process " + std::to_string(::getpid())), std::string::npos)
       << message;
   first.reset();
+  EXPECT_EQ(read_text(directory_ / "run.lock"), "");  // released: no stale PID left
   EXPECT_NO_THROW(RunLock again(directory_));
 }
 

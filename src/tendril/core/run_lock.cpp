@@ -9,6 +9,7 @@
 #include <string>
 
 #include "tendril/core/error.hpp"
+#include "tendril/core/log.hpp"
 
 namespace tendril {
 
@@ -50,6 +51,12 @@ RunLock::RunLock(const std::filesystem::path& directory) : file_(directory / kFi
     }
     throw Error(std::string("cannot lock the run directory: ") + std::strerror(error), where);
   }
+  // A holder that ends normally empties the file: a PID still there is a stale lock.
+  const std::string previous = holder_of(fd_);
+  if (!previous.empty()) {
+    log::warning("taking over ", directory.string(), ": its lock names process ", previous,
+                 ", which ended without releasing it (killed?)");
+  }
   const std::string pid = std::to_string(static_cast<long>(::getpid())) + "\n";
   if (::ftruncate(fd_, 0) != 0 ||
       ::pwrite(fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
@@ -76,7 +83,11 @@ RunLock& RunLock::operator=(RunLock&& other) noexcept {
 }
 
 RunLock::~RunLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing the last descriptor releases the flock
+  if (fd_ < 0) return;
+  if (::ftruncate(fd_, 0) != 0) {
+    // The PID stays; the next holder reports a stale lock, which is harmless.
+  }
+  ::close(fd_);  // closing the last descriptor releases the flock
 }
 
 }  // namespace tendril

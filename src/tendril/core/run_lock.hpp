@@ -7,8 +7,9 @@ namespace tendril {
 // An exclusive lock on a run directory while one process writes it: an advisory flock(2) on
 // `<directory>/run.lock`, which holds the PID of the process that took it. The kernel drops the
 // lock when its holder exits, however it exits, so a lock left by a killed process is stale and
-// taken over; a live holder makes the constructor raise Error naming its PID. Movable, not
-// copyable; the lock is released on destruction (the file stays, naming the last holder).
+// taken over (with a warning naming the process that left it); a live holder makes the
+// constructor raise Error naming its PID. Movable, not copyable; released on destruction (the
+// file stays, emptied).
 class RunLock {
  public:
   explicit RunLock(const std::filesystem::path& directory);
