@@ -172,6 +172,9 @@ TEST_F(RunFaults, LogsPastTheCheckpointAreDroppedOnResume) {
       std::ofstream(entry.path(), std::ios::app | std::ios::binary) << "\x20\x00\x00";
     }
   }
+  // And rows cut short.
+  std::ofstream(run / "progress.csv", std::ios::app) << "1,2";
+  std::ofstream(run / "eval.csv", std::ios::app) << "1792,-1";
   resume(run, kQuiet);
   expect_same_run(run, reference_);
 }

@@ -96,6 +96,11 @@ std::string record_of(const std::string& payload) {
   return record;
 }
 
+std::string read_whole(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 std::vector<std::string> split_csv_line(const std::string& line) {
   std::vector<std::string> cells;
   std::stringstream stream(line);
@@ -112,7 +117,12 @@ ScalarLog::ScalarLog(const std::filesystem::path& directory, bool resume, int64_
   std::filesystem::create_directories(directory);
   bool dropped = false;
   if (resume && std::filesystem::exists(csv_path_)) {
-    std::ifstream in(csv_path_);
+    std::string text = read_whole(csv_path_);
+    if (!text.empty() && text.back() != '\n') {  // a row cut short by a kill
+      text.erase(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
+      dropped = true;
+    }
+    std::istringstream in(text);
     std::string line;
     if (std::getline(in, line)) columns_ = split_csv_line(line);
     const auto step_column = std::find(columns_.begin(), columns_.end(), "time/total_timesteps");

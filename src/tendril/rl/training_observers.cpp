@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -124,10 +125,13 @@ EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
 
 void EvaluationObserver::restore(int64_t up_to) {
   const fs::path file = directory_ / "eval.csv";
-  std::ifstream in(file);
-  std::string line, kept = kEvalHeader, original;
+  std::ifstream stream(file, std::ios::binary);
+  const std::string original((std::istreambuf_iterator<char>(stream)),
+                             std::istreambuf_iterator<char>());
+  // A row cut short by a kill (no newline yet) is dropped; its evaluation comes again.
+  std::istringstream in(original.substr(0, original.rfind('\n') + 1));
+  std::string line, kept = kEvalHeader;
   for (int number = 1; std::getline(in, line); ++number) {
-    original += line + '\n';
     if (line.empty() || (number == 1 && line + '\n' == kEvalHeader)) continue;
     int64_t timesteps = 0;
     double mean = 0.0;
