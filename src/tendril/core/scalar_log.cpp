@@ -97,6 +97,9 @@ std::string record_of(const std::string& payload) {
 }
 
 std::string read_whole(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw Error("not a regular file: the log cannot be continued", file.string());
+  }
   std::ifstream in(file, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }

@@ -125,6 +125,9 @@ EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
 
 void EvaluationObserver::restore(int64_t up_to) {
   const fs::path file = directory_ / "eval.csv";
+  if (fs::exists(file) && !fs::is_regular_file(file)) {
+    throw Error("not a regular file: evaluations cannot be logged", file.string());
+  }
   std::ifstream stream(file, std::ios::binary);
   const std::string original((std::istreambuf_iterator<char>(stream)),
                              std::istreambuf_iterator<char>());
