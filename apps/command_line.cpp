@@ -1,6 +1,7 @@
 #include "command_line.hpp"
 
 #include <algorithm>
+#include <charconv>
 
 #include "tendril/core/error.hpp"
 
@@ -31,7 +32,9 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args,
               "--set expects key=value, got '" + assignment + "'", "command line");
       line.overrides.emplace_back(assignment.substr(0, equals), assignment.substr(equals + 1));
     } else if (contains(value_flags, flag)) {
-      require(i + 1 < args.size(), arg + " needs a value", "command line");
+      require(i + 1 < args.size() && !args[i + 1].empty(), arg + " needs a value", "command line");
+      require(args[i + 1].size() <= Config::kMaxValueBytes, arg + ": value too long",
+              "command line");
       line.options.emplace_back(flag, args[++i]);
     } else if (contains(switch_flags, flag)) {
       line.options.emplace_back(flag, "");
@@ -52,6 +55,32 @@ std::string CommandLine::value(const std::string& flag, const std::string& fallb
     if (it->first == flag) return it->second;
   }
   return fallback;
+}
+
+int64_t CommandLine::integer(const std::string& flag, int64_t fallback, int64_t min,
+                             int64_t max) const {
+  if (!has(flag)) return fallback;
+  const std::string text = value(flag, "");
+  int64_t number = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+  require(
+      error == std::errc() && end == text.data() + text.size() && number >= min && number <= max,
+      "--" + flag + " expects a whole number from " + std::to_string(min) + " to " +
+          std::to_string(max) + ", got '" + text.substr(0, 40) + "'",
+      "command line");
+  return number;
+}
+
+uint64_t CommandLine::unsigned_integer(const std::string& flag, uint64_t fallback) const {
+  if (!has(flag)) return fallback;
+  const std::string text = value(flag, "");
+  uint64_t number = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+  require(
+      error == std::errc() && end == text.data() + text.size(),
+      "--" + flag + " expects a whole number from 0 to 2^64-1, got '" + text.substr(0, 40) + "'",
+      "command line");
+  return number;
 }
 
 Config CommandLine::load_config() const {

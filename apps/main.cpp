@@ -1,6 +1,8 @@
 // tendril — simulate soft robots, train and evaluate controllers for them.
+#include <csignal>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -75,6 +77,10 @@ int main(int argc, char** argv) {
     return args.empty() ? 2 : 0;
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
+  // A closed output pipe (`tendril train ... | head`) or a file-size limit makes writes fail
+  // with an error that names the file, instead of ending the process mid-run.
+  std::signal(SIGPIPE, SIG_IGN);
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
 #ifdef TENDRIL_WITH_RL
     // One BLAS thread unless an algorithm scopes more: the other core steps environments.
@@ -107,6 +113,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const tendril::Error& e) {
     std::fprintf(stderr, "tendril %s: error: %s\n", args[0].c_str(), e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "tendril %s: error: out of memory\n", args[0].c_str());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tendril %s: unexpected error: %s\n", args[0].c_str(), e.what());

@@ -8,9 +8,9 @@
 
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "run_policy.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/wrappers/episode_recorder.hpp"
-#include "run_policy.hpp"
 
 namespace tendril::apps {
 
@@ -26,15 +26,8 @@ int record_command(const std::vector<std::string>& args) {
   require(line.positional.size() == 1, "expected one run directory", "command line");
   const fs::path run = line.positional.front();
   require(fs::exists(run / "config.yaml"), "not a run directory (no config.yaml)", run.string());
-  int episodes = 1;
-  uint64_t seed = 0;
-  try {
-    episodes = std::stoi(line.value("episodes", "1"));
-    seed = std::stoull(line.value("seed", "0"));
-  } catch (const std::exception&) {
-    throw Error("--episodes and --seed expect numbers", "command line");
-  }
-  require(episodes >= 1, "--episodes must be at least 1", "command line");
+  const int episodes = static_cast<int>(line.integer("episodes", 1, 1, 100000));
+  const uint64_t seed = line.unsigned_integer("seed", 0);
   require(!(line.has("deterministic") && line.has("stochastic")),
           "--deterministic and --stochastic exclude each other", "command line");
   std::optional<bool> deterministic;

@@ -112,20 +112,10 @@ int rollout_command(const std::vector<std::string>& args) {
           "command line");
   require(!(line.has("deterministic") && line.has("stochastic")),
           "--deterministic and --stochastic exclude each other", "command line");
-  int64_t episodes = 0, steps = 0;
-  uint64_t seed = 0;
-  try {
-    if (line.has("steps")) {
-      steps = std::stoll(line.value("steps", ""));
-      require(steps >= 1, "--steps must be at least 1", "command line");
-    } else {
-      episodes = std::stoll(line.value("episodes", "5"));
-      require(episodes >= 1, "--episodes must be at least 1", "command line");
-    }
-    seed = std::stoull(line.value("seed", "0"));
-  } catch (const std::logic_error&) {
-    throw Error("--episodes, --steps and --seed expect numbers", "command line");
-  }
+  constexpr int64_t kMost = int64_t{1} << 40;
+  const int64_t steps = line.integer("steps", 0, 1, kMost);
+  const int64_t episodes = line.has("steps") ? 0 : line.integer("episodes", 5, 1, kMost);
+  const uint64_t seed = line.unsigned_integer("seed", 0);
   std::optional<TraceFile> trace;
   if (line.has("out")) {
     const fs::path out = line.value("out", "");

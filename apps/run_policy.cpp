@@ -1,5 +1,7 @@
 #include "run_policy.hpp"
 
+#include <cstdio>
+
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/policy.hpp"
@@ -13,9 +15,7 @@ namespace fs = std::filesystem;
 RunPolicy open_run_policy(const fs::path& run, bool best,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
   require(fs::exists(run / "config.yaml"), "not a run directory (no config.yaml)", run.string());
-  Config config = Config::load_file(run / "config.yaml");
-  for (const auto& [key, value] : overrides) config.set(key, value);
-  RunPolicy result{rl::Experiment::from_config(config), {}, {}, {}, {}};
+  RunPolicy result{rl::load_run_experiment(run, overrides), {}, {}, {}, {}};
   const rl::Experiment& experiment = result.experiment;
   const fs::path file = run / (best ? "best_model.policy" : "model.policy");
   require(!best || fs::exists(file), "no best_model.policy (the run's eval.save_best is off)",
@@ -26,7 +26,11 @@ RunPolicy open_run_policy(const fs::path& run, bool best,
     result.env = envs::make(experiment.env.id, experiment.env.params);
     return result;
   }
-  result.source = rl::latest_checkpoint(run);
+  std::vector<std::string> skipped;
+  result.source = rl::newest_intact_checkpoint(run, /*needs_buffer=*/false, &skipped);
+  for (const std::string& reason : skipped) {
+    std::fprintf(stderr, "skipped %s; using %s\n", reason.c_str(), result.source.c_str());
+  }
   std::shared_ptr<envs::VecEnv> training_env = rl::make_vec_env(experiment.env);
   std::shared_ptr<rl::Algorithm> algorithm = rl::make_algorithm(experiment, *training_env);
   algorithm->load(result.source);

@@ -25,12 +25,7 @@ int serve_command(const std::vector<std::string>& args) {
   options.root = line.positional.front();
   options.assets = line.value("assets", TENDRIL_DASHBOARD_PAGE_DIR);
   options.host = line.value("host", "127.0.0.1");
-  try {
-    options.port = std::stoi(line.value("port", "8050"));
-  } catch (const std::exception&) {
-    throw Error("--port expects a number", "command line");
-  }
-  require(options.port >= 0 && options.port <= 65535, "--port must be 0..65535", "command line");
+  options.port = static_cast<int>(line.integer("port", 8050, 0, 65535));
 
   dashboard::Server server(options);
   const int port = server.bind();

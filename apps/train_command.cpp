@@ -1,14 +1,22 @@
 // `tendril train`: run an experiment file, or resume a run.
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <limits>
 
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 #include "tendril/rl/trainer.hpp"
 
 namespace tendril::apps {
+
+const char* signal_name(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+}
 
 namespace {
 
@@ -19,11 +27,15 @@ std::filesystem::path new_run_directory(const std::string& output) {
   return output + "-" + stamp;
 }
 
-void report(const rl::TrainResult& result) {
+// The exit status: 0 when the run finished or paused as asked, 128 + the signal when a signal
+// stopped it (the shell's convention), so scripts see the interruption.
+int report(const rl::TrainResult& result) {
   const std::string run = result.run_directory.string();
   std::printf("%s after %lld steps in %.1f s (%.0f steps/s)\n",
-              result.finished ? "finished" : "paused", static_cast<long long>(result.timesteps),
-              result.seconds, result.steps_per_second);
+              result.finished      ? "finished"
+              : result.interrupted ? "interrupted"
+                                   : "paused",
+              static_cast<long long>(result.timesteps), result.seconds, result.steps_per_second);
   if (result.finished) {
     std::printf("final evaluation: mean return %.2f +/- %.2f\n", result.final_eval_mean,
                 result.final_eval_std);
@@ -34,11 +46,16 @@ void report(const rl::TrainResult& result) {
                 run.c_str(), *result.best_eval_mean,
                 static_cast<long long>(result.best_eval_timesteps));
   }
+  std::printf("learning curve: %s/progress.csv (TensorBoard: %s)\n", run.c_str(), run.c_str());
+  std::printf("evaluations:    %s/eval.csv\n", run.c_str());
+  if (result.interrupted) {
+    std::printf("interrupted by %s; a checkpoint at %lld steps holds the run\n",
+                signal_name(result.interrupted), static_cast<long long>(result.timesteps));
+  }
   if (!result.finished) {
     std::printf("continue with:  tendril train --resume %s\n", run.c_str());
   }
-  std::printf("learning curve: %s/progress.csv (TensorBoard: %s)\n", run.c_str(), run.c_str());
-  std::printf("evaluations:    %s/eval.csv\n", run.c_str());
+  return result.interrupted ? 128 + result.interrupted : 0;
 }
 
 }  // namespace
@@ -48,18 +65,14 @@ int train_command(const std::vector<std::string>& args) {
   rl::TrainOptions options;
   options.quiet = line.has("quiet");
   if (line.has("stop-at")) {
-    try {
-      options.stop_at = std::stoll(line.value("stop-at", ""));
-    } catch (const std::exception&) {
-      throw Error("--stop-at expects a number of steps", "command line");
-    }
+    options.stop_at = line.integer("stop-at", 0, 1, std::numeric_limits<int64_t>::max());
   }
   if (line.has("resume")) {
     require(line.positional.empty() && line.overrides.empty(),
             "--resume takes only the run directory (its config.yaml is used as saved)",
             "command line");
-    report(rl::resume(line.value("resume", ""), options));
-    return 0;
+    catch_interrupts();
+    return report(rl::resume(line.value("resume", ""), options));
   }
   const rl::Experiment experiment = rl::Experiment::from_config(line.load_config());
   const std::filesystem::path run = line.has("out") ? std::filesystem::path(line.value("out", ""))
@@ -70,8 +83,8 @@ int train_command(const std::vector<std::string>& args) {
               static_cast<unsigned long long>(experiment.seed), run.string().c_str());
   std::printf("watch it live: tendril serve %s\n", run.string().c_str());
   std::fflush(stdout);  // before the progress line on standard error
-  report(rl::train(experiment, run, options));
-  return 0;
+  catch_interrupts();
+  return report(rl::train(experiment, run, options));
 }
 
 }  // namespace tendril::apps

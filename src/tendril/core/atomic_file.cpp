@@ -1,8 +1,10 @@
 #include "tendril/core/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -19,7 +21,8 @@ void write_all(int fd, std::string_view bytes, std::string_view what, const std:
     const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      throw Error("cannot write " + std::string(what) + ": " + std::strerror(errno), where);
+      const char* reason = n == 0 ? "no space left on device" : std::strerror(errno);
+      throw Error("cannot write " + std::string(what) + ": " + reason, where);
     }
     written += static_cast<std::size_t>(n);
   }
@@ -90,6 +93,39 @@ void write_new_file_atomically(const std::filesystem::path& file, std::string_vi
         where);
   }
   sync_directory(file.parent_path());
+}
+
+void append_to_file(const std::filesystem::path& file, std::string_view bytes,
+                    std::string_view what) {
+  const std::string where = file.string();
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw Error("cannot open " + std::string(what) + " for writing: " + std::strerror(errno),
+                where);
+  }
+  struct stat before {};
+  const bool sized = ::fstat(fd, &before) == 0;
+  try {
+    write_all(fd, bytes, what, where);
+  } catch (...) {
+    // A partial append (the disk filled mid-way) is taken back: the file keeps whole rows and
+    // whole records only.
+    if (sized && ::ftruncate(fd, before.st_size) != 0) {
+      // Nothing more to do: readers drop a torn tail (core/scalar_log) on resume.
+    }
+    ::close(fd);
+    throw;
+  }
+  if (::close(fd) != 0) {
+    throw Error("cannot write " + std::string(what) + ": " + std::strerror(errno), where);
+  }
+}
+
+bool is_atomic_write_leftover(const std::string& name) {
+  const std::size_t at = name.rfind(".tmp.");
+  if (at == std::string::npos || at == 0 || at + 5 == name.size()) return false;
+  return std::all_of(name.begin() + static_cast<std::ptrdiff_t>(at + 5), name.end(),
+                     [](char c) { return c >= '0' && c <= '9'; });
 }
 
 }  // namespace tendril

@@ -17,4 +17,14 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
 void write_new_file_atomically(const std::filesystem::path& file, std::string_view bytes,
                                std::string_view what);
 
+// Appends `bytes` to `file` (created if missing). Raises Error naming `file` and the system's
+// reason if any byte cannot be written (a full disk, an I/O error, a file size limit); a
+// partial append is then cut off again, so the file never ends in half a row.
+void append_to_file(const std::filesystem::path& file, std::string_view bytes,
+                    std::string_view what);
+
+// Whether `name` is the name of a temporary file `write_file_atomically` leaves behind when
+// its process is killed ("<file>.tmp.<pid>"): removable once no process writes beside it.
+bool is_atomic_write_leftover(const std::string& name);
+
 }  // namespace tendril

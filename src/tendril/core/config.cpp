@@ -24,12 +24,19 @@ struct Config::NodeHandle {
 
 namespace {
 
+// A value as messages quote it: long ones (a runaway file, a huge override) cut short.
+std::string clipped(std::string_view text) {
+  constexpr std::size_t kShown = 60;
+  if (text.size() <= kShown) return std::string(text);
+  return std::string(text.substr(0, kShown)) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
 std::string type_name(const YAML::Node& node) {
   switch (node.Type()) {
     case YAML::NodeType::Null:
       return "null";
     case YAML::NodeType::Scalar:
-      return "'" + node.Scalar() + "'";
+      return "'" + clipped(node.Scalar()) + "'";
     case YAML::NodeType::Sequence:
       return "a sequence";
     case YAML::NodeType::Map:
@@ -166,11 +173,29 @@ Config::Config(std::shared_ptr<Shared> shared, std::shared_ptr<NodeHandle> node,
     : shared_(std::move(shared)), node_(std::move(node)), path_(std::move(path)) {}
 
 Config Config::load_file(const std::filesystem::path& file) {
-  std::ifstream stream(file);
+  std::error_code error;
+  const auto status = std::filesystem::status(file, error);
+  if (std::filesystem::is_directory(status)) {
+    throw Error("is a directory, not a config file", file.string());
+  }
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+      !std::filesystem::is_fifo(status)) {
+    throw Error("not a regular file", file.string());
+  }
+  std::ifstream stream(file, std::ios::binary);
   if (!stream) throw Error("cannot open config file", file.string());
-  std::stringstream text;
-  text << stream.rdbuf();
-  return parse(text.str(), file.string());
+  std::string text;
+  char chunk[65536];
+  while (stream.read(chunk, sizeof chunk) || stream.gcount() > 0) {
+    text.append(chunk, static_cast<std::size_t>(stream.gcount()));
+    if (text.size() > kMaxFileBytes) {
+      throw Error(
+          "larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB; not an experiment file",
+          file.string());
+    }
+  }
+  if (stream.bad()) throw Error("cannot read config file", file.string());
+  return parse(text, file.string());
 }
 
 Config Config::parse(std::string_view yaml_text, std::string source) {
@@ -318,11 +343,16 @@ std::vector<Config> Config::children(std::string_view key) const {
 void Config::set(std::string_view dotted_path, std::string_view value) {
   const std::string where = "--set " + std::string(dotted_path);
   if (dotted_path.empty()) throw Error("empty key", where);
+  if (value.size() > kMaxValueBytes) {
+    throw Error("value of " + std::to_string(value.size()) + " bytes; at most " +
+                    std::to_string(kMaxValueBytes) + " are accepted",
+                where);
+  }
   YAML::Node parsed;
   try {
     parsed = YAML::Load(std::string(value));
   } catch (const YAML::ParserException& e) {
-    throw Error("malformed value '" + std::string(value) + "': " + e.msg, where);
+    throw Error("malformed value '" + clipped(value) + "': " + e.msg, where);
   }
   YAML::Node node = node_->node;
   std::size_t start = 0;

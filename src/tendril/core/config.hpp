@@ -21,7 +21,12 @@ class Config {
   // An empty mapping.
   Config();
 
+  // At most kMaxFileBytes (experiment files are a few kilobytes; the bound keeps /dev/zero or
+  // a runaway generator from exhausting memory); regular files and pipes only.
   static Config load_file(const std::filesystem::path& file);
+  static constexpr std::size_t kMaxFileBytes = std::size_t{1} << 20;
+  // The longest value `set` accepts (a command-line override).
+  static constexpr std::size_t kMaxValueBytes = std::size_t{1} << 16;
   static Config parse(std::string_view yaml_text, std::string source = "<text>");
 
   bool has(std::string_view key) const;

@@ -3,11 +3,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 
+#include "tendril/core/atomic_file.hpp"
 #include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 
@@ -76,6 +79,31 @@ std::string format(double value) {
   return text;
 }
 
+std::string csv_row(const std::vector<std::string>& row, std::size_t columns) {
+  std::string text;
+  for (std::size_t c = 0; c < columns; ++c) text += (c ? "," : "") + (c < row.size() ? row[c] : "");
+  return text + '\n';
+}
+
+// One TFRecord: length, its masked CRC, the payload, the payload's masked CRC.
+std::string record_of(const std::string& payload) {
+  std::string record;
+  const uint64_t length = payload.size();
+  put_fixed(record, length);
+  put_fixed(record, masked_crc(&length, sizeof length));
+  record += payload;
+  put_fixed(record, masked_crc(payload.data(), payload.size()));
+  return record;
+}
+
+std::string read_whole(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) {
+    throw Error("not a regular file: the log cannot be continued", file.string());
+  }
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 std::vector<std::string> split_csv_line(const std::string& line) {
   std::vector<std::string> cells;
   std::stringstream stream(line);
@@ -87,15 +115,43 @@ std::vector<std::string> split_csv_line(const std::string& line) {
 
 }  // namespace
 
-ScalarLog::ScalarLog(const std::filesystem::path& directory, bool resume)
+ScalarLog::ScalarLog(const std::filesystem::path& directory, bool resume, int64_t resume_step)
     : csv_path_(directory / "progress.csv") {
   std::filesystem::create_directories(directory);
+  bool dropped = false;
   if (resume && std::filesystem::exists(csv_path_)) {
-    std::ifstream in(csv_path_);
+    std::string text = read_whole(csv_path_);
+    if (!text.empty() && text.back() != '\n') {  // a row cut short by a kill
+      text.erase(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
+      dropped = true;
+    }
+    std::istringstream in(text);
     std::string line;
     if (std::getline(in, line)) columns_ = split_csv_line(line);
+    const auto step_column = std::find(columns_.begin(), columns_.end(), "time/total_timesteps");
+    const std::size_t step_index = static_cast<std::size_t>(step_column - columns_.begin());
     while (std::getline(in, line)) {
-      if (!line.empty()) rows_.push_back(split_csv_line(line));
+      if (line.empty()) continue;
+      std::vector<std::string> row = split_csv_line(line);
+      if (step_column != columns_.end() && step_index < row.size()) {
+        double step = 0.0;
+        const std::string& cell = row[step_index];
+        const auto parsed = std::from_chars(cell.data(), cell.data() + cell.size(), step);
+        if (parsed.ec == std::errc() && step > static_cast<double>(resume_step)) {
+          dropped = true;
+          continue;
+        }
+      }
+      rows_.push_back(std::move(row));
+    }
+  }
+  if (resume) {
+    for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("events.out.tfevents.", 0) == 0 && !is_atomic_write_leftover(name) &&
+          entry.is_regular_file()) {
+        truncate_event_file(entry.path(), resume_step);
+      }
     }
   }
   char host[256] = "localhost";
@@ -106,38 +162,20 @@ ScalarLog::ScalarLog(const std::filesystem::path& directory, bool resume)
     event_path_ = directory / ("events.out.tfevents." + std::to_string(stamp) + "." + host + "." +
                                std::to_string(suffix));
   }
-  events_.open(event_path_, std::ios::binary);
-  if (!events_) throw Error("cannot create the TensorBoard event file", event_path_.string());
   write_event(event(now_seconds(), 0, "brain.Event:2", {}));
-  rewrite_csv();
+  if (!resume || dropped || !std::filesystem::exists(csv_path_)) rewrite_csv();
 }
 
 void ScalarLog::write_event(const std::string& payload) {
-  std::string record;
-  const uint64_t length = payload.size();
-  put_fixed(record, length);
-  put_fixed(record, masked_crc(&length, sizeof length));
-  record += payload;
-  put_fixed(record, masked_crc(payload.data(), payload.size()));
-  events_.write(record.data(), static_cast<std::streamsize>(record.size()));
-  events_.flush();
+  append_to_file(event_path_, record_of(payload), "the TensorBoard event file");
 }
 
 void ScalarLog::rewrite_csv() {
-  const std::filesystem::path temporary = csv_path_.string() + ".tmp";
-  {
-    std::ofstream out(temporary);
-    for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << columns_[c];
-    if (!columns_.empty()) out << '\n';
-    for (const auto& row : rows_) {
-      for (std::size_t c = 0; c < columns_.size(); ++c) {
-        out << (c ? "," : "") << (c < row.size() ? row[c] : "");
-      }
-      out << '\n';
-    }
-    if (!out) throw Error("cannot write progress.csv", temporary.string());
-  }
-  std::filesystem::rename(temporary, csv_path_);
+  std::string text;
+  for (std::size_t c = 0; c < columns_.size(); ++c) text += (c ? "," : "") + columns_[c];
+  if (!columns_.empty()) text += '\n';
+  for (const auto& row : rows_) text += csv_row(row, columns_.size());
+  write_file_atomically(csv_path_, text, "progress.csv");
 }
 
 void ScalarLog::dump(int64_t step) {
@@ -158,9 +196,7 @@ void ScalarLog::dump(int64_t step) {
   if (widened || rows_.size() == 1) {
     rewrite_csv();
   } else {
-    std::ofstream out(csv_path_, std::ios::app);
-    for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << row[c];
-    out << '\n';
+    append_to_file(csv_path_, csv_row(row, row.size()), "progress.csv");
   }
   write_event(event(now_seconds(), step, "", pending_));
   pending_.clear();
@@ -278,6 +314,49 @@ std::vector<EventScalar> read_event_scalars(const std::filesystem::path& file) {
     for (auto& [tag, value] : values) scalars.push_back({tag, step, value});
   }
   return scalars;
+}
+
+int truncate_event_file(const std::filesystem::path& file, int64_t last_step) {
+  const std::string where = file.string();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error("cannot open event file", where);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string kept;
+  int dropped = 0;
+  std::size_t at = 0;
+  while (at < bytes.size()) {
+    uint64_t length = 0;
+    uint32_t length_crc = 0, data_crc = 0;
+    if (at + 12 > bytes.size()) break;
+    std::memcpy(&length, bytes.data() + at, 8);
+    std::memcpy(&length_crc, bytes.data() + at + 8, 4);
+    if (length_crc != masked_crc(&length, 8) || length > bytes.size() - at - 16) break;
+    std::memcpy(&data_crc, bytes.data() + at + 12 + length, 4);
+    if (data_crc != masked_crc(bytes.data() + at + 12, length)) break;
+    Reader event{bytes, at + 12, at + 12 + length, where};
+    int64_t step = 0;
+    try {
+      while (event.at < event.end) {
+        const uint64_t key = event.varint();
+        if (key == (2 << 3 | 0)) {
+          step = static_cast<int64_t>(event.varint());
+        } else {
+          event.skip(static_cast<int>(key & 7));
+        }
+      }
+    } catch (const Error&) {
+      break;
+    }
+    if (step <= last_step) {
+      kept.append(bytes, at, 12 + length + 4);
+    } else {
+      ++dropped;
+    }
+    at += 12 + length + 4;
+  }
+  if (at < bytes.size()) ++dropped;  // a torn or corrupt tail
+  if (dropped > 0) write_file_atomically(file, kept, "the TensorBoard event file");
+  return dropped;
 }
 
 }  // namespace tendril

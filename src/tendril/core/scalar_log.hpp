@@ -2,7 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -16,10 +16,16 @@ namespace tendril {
 //                  adds a column and the file is rewritten with the wider header, as SB3 does;
 //   events.out.tfevents.* — TensorBoard's event file (TFRecord framing, Event/Summary protobufs
 //                  with simple_value), which TensorBoard reads.
+//
+// Every write is checked: a full disk or an I/O error raises Error naming the file. A resumed
+// log holds one timeline: rows and events of steps after `resume_step` (logged after the
+// checkpoint a run resumes from, by a process that was then killed) are dropped from
+// progress.csv and from the earlier event files, as is a record torn by a kill.
 class ScalarLog {
  public:
-  // Creates (or appends to, when resuming) the files in `directory`.
-  explicit ScalarLog(const std::filesystem::path& directory, bool resume = false);
+  // Creates (or, when resuming, continues) the files in `directory`.
+  explicit ScalarLog(const std::filesystem::path& directory, bool resume = false,
+                     int64_t resume_step = std::numeric_limits<int64_t>::max());
 
   void record(const std::string& key, double value) { pending_[key] = value; }
   void dump(int64_t step);
@@ -35,7 +41,6 @@ class ScalarLog {
   std::vector<std::string> columns_;
   std::vector<std::vector<std::string>> rows_;  // every row so far, for header widening
   std::map<std::string, double> pending_;
-  std::ofstream events_;
 };
 
 // Reads back the scalars of a TensorBoard event file as (tag, step, value) triples, verifying
@@ -46,5 +51,9 @@ struct EventScalar {
   float value;
 };
 std::vector<EventScalar> read_event_scalars(const std::filesystem::path& file);
+
+// Rewrites an event file (atomically) without the records of steps after `last_step` and
+// without a trailing record that is torn or corrupt; returns how many records were dropped.
+int truncate_event_file(const std::filesystem::path& file, int64_t last_step);
 
 }  // namespace tendril

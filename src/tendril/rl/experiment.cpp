@@ -1,6 +1,8 @@
 #include "tendril/rl/experiment.hpp"
 
 #include <algorithm>
+#include <new>
+#include <string>
 #include <vector>
 
 #include "tendril/core/error.hpp"
@@ -56,10 +58,26 @@ Experiment Experiment::from_config(Config config) {
   probe_options.num_threads = 1;
   probe_options.normalize_observation = probe_options.normalize_reward = false;
   auto probe = make_vec_env(probe_options);
-  algorithm.factory(*probe, e.algo, e.seed);
+  try {
+    algorithm.factory(*probe, e.algo, e.seed);
+  } catch (const std::bad_alloc&) {
+    throw Error(out_of_memory_message(e), config.source());
+  }
   // Last: the environment's own parameters are read by the environment.
   config.reject_unknown();
   return e;
+}
+
+std::string out_of_memory_message(const Experiment& experiment) {
+  std::string text = "out of memory building or training the run; the sizes that decide it:";
+  for (const char* name : {"buffer_size", "batch_size", "n_steps"}) {
+    if (experiment.algo.has(name)) {
+      text += std::string(" algo.") + name + " = " +
+              std::to_string(experiment.algo.get<int64_t>(name)) + ",";
+    }
+  }
+  if (experiment.algo.has("net_arch")) text += " algo.net_arch,";
+  return text + " env.n_envs = " + std::to_string(experiment.env.n_envs);
 }
 
 std::unique_ptr<Algorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env) {

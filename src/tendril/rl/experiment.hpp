@@ -54,6 +54,10 @@ struct Experiment {
   static Experiment from_config(Config config);
 };
 
+// What an allocation failure (std::bad_alloc) while building or training the experiment is
+// about, named as the config names the sizes that decide it.
+std::string out_of_memory_message(const Experiment& experiment);
+
 // The algorithm named in the experiment, on `env`.
 std::unique_ptr<Algorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env);
 

@@ -6,6 +6,11 @@
 
 namespace tendril::rl {
 
+namespace {
+constexpr int64_t kMaxLayerSize = 65536;
+constexpr int64_t kMaxLayerWeights = int64_t{1} << 26;
+}  // namespace
+
 void OffPolicyConfig::read(const Config& algo) {
   buffer_size = algo.get_or<int64_t>("buffer_size", buffer_size);
   learning_starts = algo.get_or<int64_t>("learning_starts", learning_starts);
@@ -37,8 +42,21 @@ void OffPolicyConfig::validate(const std::string& where) const {
     return std::all_of(sizes.begin(), sizes.end(), [](int64_t size) { return size >= 1; });
   };
   require(positive(net_arch) && positive(qf_net_arch), "layer sizes must be positive", where);
+  // Bounds that keep a typo from asking for tens of gigabytes of weights.
+  const auto bounded = [](const std::vector<int64_t>& sizes) {
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+      if (sizes[i] > kMaxLayerSize) return false;
+      if (i > 0 && sizes[i - 1] * sizes[i] > kMaxLayerWeights) return false;
+    }
+    return true;
+  };
+  require(bounded(net_arch) && bounded(qf_net_arch),
+          "net_arch/qf_net_arch: layers of at most 65536 units and 2^26 weights between two "
+          "layers",
+          where);
   require(log_interval >= 1, "log_interval must be at least 1", where);
-  require(learner_threads >= 1, "learner_threads must be at least 1", where);
+  require(learner_threads >= 1 && learner_threads <= 256, "learner_threads must lie in [1, 256]",
+          where);
 }
 
 std::string read_preset(const Config& algo, const std::vector<std::string>& known,

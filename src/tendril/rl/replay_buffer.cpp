@@ -1,5 +1,8 @@
 #include "tendril/rl/replay_buffer.hpp"
 
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -39,6 +42,20 @@ ReplayBuffer::ReplayBuffer(int64_t capacity, int64_t observation_size, int64_t a
   require(capacity >= 1, "capacity must be at least 1", "rl::ReplayBuffer");
   require(observation_size >= 1 && action_size >= 1,
           "observation and action sizes must be positive", "rl::ReplayBuffer");
+  // Refused up front when it cannot fit in memory: the pages are committed only as transitions
+  // arrive, so an oversized buffer would otherwise end the process late, without a message.
+  const double bytes = static_cast<double>(capacity) *
+                       static_cast<double>(2 * observation_size + action_size + 2) * sizeof(float);
+  const double memory =
+      static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  if (memory > 0.0 && bytes > memory) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "a replay buffer of %lld transitions needs %.1f GiB, more than this machine's "
+                  "%.1f GiB of memory",
+                  static_cast<long long>(capacity), bytes / (1 << 30), memory / (1 << 30));
+    throw Error(text, "algo.buffer_size");
+  }
   // Uninitialised: the pages are committed as transitions are written.
   observations_.resize(observation_size, capacity);
   next_observations_.resize(observation_size, capacity);
@@ -97,6 +114,15 @@ void ReplayBuffer::load(const std::filesystem::path& file) {
   const std::string where = file.string();
   std::ifstream stream(file, std::ios::binary);
   require(stream.good(), "cannot open replay buffer file", where);
+  // Never read more than a full buffer of this shape can take (a damaged or foreign file).
+  std::error_code error;
+  const uintmax_t file_bytes = std::filesystem::file_size(file, error);
+  const double largest = static_cast<double>(kHeaderWords + 2) * sizeof(int64_t) +
+                         static_cast<double>(capacity_) *
+                             static_cast<double>(2 * observation_size() + action_size() + 2) *
+                             sizeof(float);
+  require(!error && static_cast<double>(file_bytes) <= largest,
+          "replay buffer file is larger than a buffer of this capacity", where);
   const std::string bytes((std::istreambuf_iterator<char>(stream)),
                           std::istreambuf_iterator<char>());
   const std::size_t header_bytes = sizeof kMagic + kHeaderWords * sizeof(int64_t);

@@ -1,11 +1,21 @@
 #include "tendril/rl/trainer.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <new>
 #include <optional>
 #include <string>
+#include <string_view>
 
+#include "tendril/core/archive.hpp"
+#include "tendril/core/atomic_file.hpp"
+#include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/log.hpp"
+#include "tendril/core/run_lock.hpp"
 #include "tendril/rl/training_observers.hpp"
 
 namespace tendril::rl {
@@ -15,25 +25,106 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
+// The step count of "step_<N>.ckpt", -1 for other names.
+int64_t checkpoint_steps(const fs::path& file) {
+  const std::string name = file.filename().string();
+  if (name.rfind("step_", 0) != 0 || file.extension() != ".ckpt") return -1;
+  try {
+    std::size_t used = 0;
+    const std::string digits = name.substr(5, name.size() - 10);
+    const int64_t steps = std::stoll(digits, &used);
+    return used == digits.size() ? steps : -1;
+  } catch (const std::exception&) {
+    return -1;
+  }
+}
+
+// Removes what killed writers leave behind: temporary files of atomic writes, and replay
+// buffers whose checkpoint was never written. Called with the run's lock held.
+void remove_leftovers(const fs::path& directory) {
+  for (const fs::path& folder : {directory, directory / "checkpoints"}) {
+    if (!fs::is_directory(folder)) continue;
+    std::vector<fs::path> doomed;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      const fs::path& file = entry.path();
+      const std::string name = file.filename().string();
+      const bool orphan_buffer =
+          file.extension() == ".buffer" && !fs::exists(fs::path(file).replace_extension(".ckpt"));
+      if (is_atomic_write_leftover(name) || name == "progress.csv.tmp" || orphan_buffer) {
+        doomed.push_back(file);
+      }
+    }
+    for (const fs::path& file : doomed) {
+      log::info("removing ", file.string(), ", left by an interrupted write");
+      fs::remove(file);
+    }
+  }
+}
+
+// config.yaml ends with a YAML comment holding the CRC-32C of the lines above it, so a damaged
+// or edited copy is refused before a resume or an evaluation uses another experiment than the
+// checkpoints beside it were trained with.
+constexpr std::string_view kChecksumLine = "# CRC-32C of the lines above: ";
+
+std::string with_checksum(const std::string& text) {
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "%08x", crc32c(text.data(), text.size()));
+  return text + std::string(kChecksumLine) + hex + "\n";
+}
+
+// Whether the directory holds nothing but its lock and leftovers of atomic writes.
+bool holds_nothing(const fs::path& directory) {
+  for (const auto& entry : fs::directory_iterator(directory)) {
+    const std::string name = entry.path().filename().string();
+    if (name != RunLock::kFileName && !is_atomic_write_leftover(name)) return false;
+  }
+  return true;
+}
+
+// Whether the directory holds an earlier start of this very experiment that never reached a
+// checkpoint (a sweep interrupted early): its files can only be recomputed, never lost.
+bool unstarted_attempt(const fs::path& directory, const std::string& config_text) {
+  if (fs::exists(directory / "model.policy") || !checkpoints(directory).empty()) return false;
+  std::ifstream in(directory / "config.yaml", std::ios::binary);
+  if (!in) return false;
+  const std::string saved((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return saved == with_checksum(config_text);
+}
+
 // One training run: the vector env, the algorithm and the observers that log, evaluate,
 // checkpoint and print (rl/training_observers).
 class Run {
  public:
-  Run(const Experiment& experiment, fs::path directory, const TrainOptions& options, bool resuming)
+  Run(const Experiment& experiment, fs::path directory, const TrainOptions& options, RunLock lock,
+      bool resuming)
       : experiment_(experiment),
         directory_(std::move(directory)),
         options_(options),
+        lock_(std::move(lock)),
         env_(make_vec_env(experiment.env)),
         algorithm_(make_algorithm(experiment, *env_)) {
     fs::create_directories(directory_ / "checkpoints");
     fs::path last_buffer;
     if (resuming) {
-      const fs::path checkpoint = latest_checkpoint(directory_);
+      const bool with_buffer = algorithm_->has_replay_buffer() && experiment_.save_replay_buffer;
+      std::vector<std::string> skipped;
+      const fs::path checkpoint = newest_intact_checkpoint(directory_, with_buffer, &skipped);
       algorithm_->load(checkpoint);
-      if (algorithm_->has_replay_buffer() && experiment_.save_replay_buffer) {
+      if (with_buffer) {
         algorithm_->load_replay_buffer(buffer_path(checkpoint));
         last_buffer = buffer_path(checkpoint);
       }
+      // Only now that the run has a state: set the unusable newer checkpoints aside, keeping
+      // them for inspection; training writes their steps again.
+      for (const fs::path& newer : checkpoints(directory_)) {
+        if (newer == checkpoint) break;
+        fs::rename(newer, newer.string() + ".corrupt");
+      }
+      for (const std::string& reason : skipped) {
+        log::warning("skipped ", reason, " (kept as .corrupt); resuming from ",
+                     checkpoint.filename().string());
+      }
+      remove_leftovers(directory_);
     }
     const int64_t first_step = algorithm_->num_timesteps();
     log_.emplace(directory_, resuming, first_step);
@@ -54,6 +145,7 @@ class Run {
     result.run_directory = directory_;
     result.timesteps = algorithm_->num_timesteps();
     result.finished = result.timesteps >= experiment_.n_timesteps;
+    result.interrupted = result.finished ? 0 : checkpoints_->interrupted();
     if (result.finished) {
       const EvaluationResult final_eval = evaluation_->evaluate(result.timesteps);
       result.final_eval_mean = final_eval.mean_return();
@@ -73,6 +165,7 @@ class Run {
   const Experiment& experiment_;
   fs::path directory_;
   TrainOptions options_;
+  RunLock lock_;  // held for the run's lifetime
   std::unique_ptr<envs::VecEnv> env_;
   std::unique_ptr<Algorithm> algorithm_;
   std::optional<ScalarLogObserver> log_;
@@ -81,47 +174,128 @@ class Run {
   std::optional<ProgressLine> progress_line_;
 };
 
+TrainResult run(const Experiment& experiment, const fs::path& directory,
+                const TrainOptions& options, RunLock lock, bool resuming) {
+  try {
+    Run run(experiment, directory, options, std::move(lock), resuming);
+    return run.execute();
+  } catch (const std::bad_alloc&) {
+    throw Error(out_of_memory_message(experiment), experiment.config.source());
+  }
+}
+
 }  // namespace
 
-fs::path latest_checkpoint(const fs::path& run_directory) {
+std::vector<fs::path> checkpoints(const fs::path& run_directory) {
+  std::vector<std::pair<int64_t, fs::path>> found;
   const fs::path folder = run_directory / "checkpoints";
-  fs::path newest;
-  int64_t newest_steps = -1;
   if (fs::is_directory(folder)) {
     for (const auto& entry : fs::directory_iterator(folder)) {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("step_", 0) != 0 || entry.path().extension() != ".ckpt") continue;
-      try {
-        const int64_t steps = std::stoll(name.substr(5, name.size() - 10));
-        if (steps > newest_steps) newest_steps = steps, newest = entry.path();
-      } catch (const std::exception&) {
-        continue;
-      }
+      const int64_t steps = checkpoint_steps(entry.path());
+      if (steps >= 0) found.emplace_back(steps, entry.path());
     }
   }
-  if (newest_steps < 0) throw Error("no checkpoint to resume from", folder.string());
-  return newest;
+  std::sort(found.begin(), found.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<fs::path> files;
+  for (auto& [steps, file] : found) files.push_back(std::move(file));
+  return files;
+}
+
+fs::path latest_checkpoint(const fs::path& run_directory) {
+  const std::vector<fs::path> files = checkpoints(run_directory);
+  if (files.empty())
+    throw Error("no checkpoint to resume from", (run_directory / "checkpoints").string());
+  return files.front();
+}
+
+fs::path newest_intact_checkpoint(const fs::path& run_directory, bool needs_buffer,
+                                  std::vector<std::string>* skipped) {
+  std::vector<std::string> reasons;
+  for (const fs::path& file : checkpoints(run_directory)) {
+    try {
+      const ArchiveReader verified(file, "checkpoint");
+      if (needs_buffer && !fs::exists(buffer_path(file))) {
+        throw Error("its replay buffer " + buffer_path(file).filename().string() +
+                        " is missing (only the newest checkpoint keeps one)",
+                    file.string());
+      }
+      if (skipped) *skipped = reasons;
+      return file;
+    } catch (const Error& e) {
+      reasons.push_back(e.what());
+    }
+  }
+  if (reasons.empty()) {
+    throw Error("no checkpoint to resume from", (run_directory / "checkpoints").string());
+  }
+  std::string text = "no intact checkpoint to resume from:";
+  for (const std::string& reason : reasons) text += "\n  " + reason;
+  throw Error(text, (run_directory / "checkpoints").string());
 }
 
 TrainResult train(const Experiment& experiment, const fs::path& run_directory,
                   const TrainOptions& options) {
-  if (fs::exists(run_directory) && !fs::is_empty(run_directory)) {
-    throw Error("run directory is not empty; choose another (nothing was overwritten)",
-                run_directory.string());
+  const std::string where = run_directory.string();
+  require(!run_directory.empty(), "the run directory needs a name", "--out");
+  std::error_code error;
+  fs::create_directories(run_directory, error);
+  if (error || !fs::is_directory(run_directory)) {
+    throw Error("cannot create the run directory: " +
+                    (error ? error.message() : std::string("a file of that name exists")),
+                where);
   }
-  fs::create_directories(run_directory);
-  std::ofstream(run_directory / "config.yaml") << experiment.config.dump_resolved();
-  Run run(experiment, run_directory, options, /*resuming=*/false);
-  return run.execute();
+  const bool had_lock_file = fs::exists(run_directory / RunLock::kFileName);
+  RunLock lock(run_directory);
+  const std::string config_text = experiment.config.dump_resolved();
+  if (!holds_nothing(run_directory)) {
+    if (!options.restart_unstarted || !unstarted_attempt(run_directory, config_text)) {
+      if (!had_lock_file) fs::remove(lock.file());
+      throw Error("run directory is not empty; choose another (nothing was overwritten)", where);
+    }
+    log::info("restarting ", where, ": its earlier start never reached a checkpoint");
+    for (const auto& entry : fs::directory_iterator(run_directory)) {
+      if (entry.path().filename() != RunLock::kFileName) fs::remove_all(entry.path());
+    }
+  }
+  remove_leftovers(run_directory);
+  write_file_atomically(run_directory / "config.yaml", with_checksum(config_text), "config.yaml");
+  return run(experiment, run_directory, options, std::move(lock), /*resuming=*/false);
+}
+
+Experiment load_run_experiment(const fs::path& run_directory,
+                               const std::vector<std::pair<std::string, std::string>>& overrides) {
+  const fs::path file = run_directory / "config.yaml";
+  require(fs::exists(file), "not a run directory (no config.yaml)", run_directory.string());
+  Config config = Config::load_file(file);  // bounded, and refuses what is not a file
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.rfind(kChecksumLine);
+  if (at != std::string::npos && (at == 0 || text[at - 1] == '\n')) {
+    if (with_checksum(text.substr(0, at)) != text) {
+      throw Error(
+          "damaged or edited since the run started (its checksum line does not match); "
+          "the checkpoints beside it belong to the experiment it held",
+          file.string());
+    }
+  }
+  for (const auto& [key, value] : overrides) config.set(key, value);
+  return Experiment::from_config(config);
 }
 
 TrainResult resume(const fs::path& run_directory, const TrainOptions& options) {
   const fs::path config_file = run_directory / "config.yaml";
   if (!fs::exists(config_file))
     throw Error("not a run directory (no config.yaml)", run_directory.string());
-  const Experiment experiment = Experiment::from_config(Config::load_file(config_file));
-  Run run(experiment, run_directory, options, /*resuming=*/true);
-  return run.execute();
+  RunLock lock(run_directory);
+  if (fs::exists(run_directory / "model.policy")) {
+    throw Error(
+        "the run has finished (model.policy is there): nothing to resume, nothing "
+        "was changed; start a new run to train longer",
+        run_directory.string());
+  }
+  const Experiment experiment = load_run_experiment(run_directory);
+  return run(experiment, run_directory, options, std::move(lock), /*resuming=*/true);
 }
 
 }  // namespace tendril::rl

@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "tendril/rl/experiment.hpp"
 
@@ -17,12 +19,23 @@ namespace tendril::rl {
 //   model.policy      the final policy (rl::load_policy; acts on raw observations)
 //   best_model.policy with eval.save_best: the policy of the best evaluation (highest mean
 //                     return; the latest of equals, which has trained longest)
+//   run.lock          held (core/run_lock) by the one process that writes the run
 // and a live progress line on standard error.
+//
+// Faults: config.yaml and the CSV headers are written atomically before training starts;
+// every write is checked (a full disk raises Error naming the file); after SIGINT/SIGTERM
+// (core/interrupt, when the program catches them) the run writes a checkpoint at the end of
+// the current iteration and returns with `interrupted` set. A resumed run drops the log rows
+// written after its checkpoint, so its logs hold one timeline, and removes the temporary files
+// of writes its predecessor did not finish.
 struct TrainOptions {
   // Stop after the first checkpoint at or past this many steps (a run paused on purpose; it
   // continues with `resume`). Unset: train to n_timesteps.
   std::optional<int64_t> stop_at;
   bool quiet = false;  // no progress line
+  // `train` into a directory that holds an earlier start of the same experiment (the same
+  // config.yaml) that never reached a checkpoint: start it again instead of refusing.
+  bool restart_unstarted = false;
 };
 
 struct TrainResult {
@@ -35,9 +48,11 @@ struct TrainResult {
   int64_t best_eval_timesteps = 0;
   double seconds = 0.0;
   double steps_per_second = 0.0;
+  int interrupted = 0;  // the signal that stopped the run early (a checkpoint holds its state)
 };
 
 // Starts a run in `run_directory`, which must not exist or be empty (nothing is overwritten).
+// Raises Error naming the holder when another process holds the directory.
 TrainResult train(const Experiment& experiment, const std::filesystem::path& run_directory,
                   const TrainOptions& options = {});
 
@@ -45,9 +60,28 @@ TrainResult train(const Experiment& experiment, const std::filesystem::path& run
 // there. The resumed run computes exactly what the uninterrupted run computes: checkpoints are
 // taken between iterations and hold the environments' state when they support snapshots (and
 // otherwise every environment restarts from a seeded reset after each checkpoint).
+// A corrupt or truncated newest checkpoint is reported (log warning naming it), renamed to
+// `step_<N>.ckpt.corrupt`, and the newest intact one is used. A finished run (model.policy
+// present) is refused and left unchanged.
 TrainResult resume(const std::filesystem::path& run_directory, const TrainOptions& options = {});
+
+// The experiment of a run, from its config.yaml (which ends with a comment holding its CRC-32C:
+// a damaged or edited file raises Error instead of resuming or evaluating another experiment).
+// `overrides` (key=value, as --set gives them) change it for this use, e.g. the environment's
+// parameters to test a policy on conditions it was not trained on.
+Experiment load_run_experiment(
+    const std::filesystem::path& run_directory,
+    const std::vector<std::pair<std::string, std::string>>& overrides = {});
 
 // The newest checkpoint in a run directory; raises Error if there is none.
 std::filesystem::path latest_checkpoint(const std::filesystem::path& run_directory);
+// The checkpoints of a run directory, newest first.
+std::vector<std::filesystem::path> checkpoints(const std::filesystem::path& run_directory);
+// The newest checkpoint whose archive verifies (core/archive), with its replay buffer when
+// `needs_buffer`; `skipped` receives "<file>: <reason>" for each newer one that does not.
+// Raises Error listing every reason when none is intact.
+std::filesystem::path newest_intact_checkpoint(const std::filesystem::path& run_directory,
+                                               bool needs_buffer,
+                                               std::vector<std::string>* skipped = nullptr);
 
 }  // namespace tendril::rl

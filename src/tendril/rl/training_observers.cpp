@@ -2,10 +2,14 @@
 
 #include <charconv>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
+#include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 
 namespace tendril::rl {
 
@@ -13,6 +17,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+
+constexpr const char* kEvalHeader = "timesteps,mean_return,std_return,mean_length,episodes\n";
 
 double seconds_between(Clock::time_point start, Clock::time_point end) {
   return std::chrono::duration<double>(end - start).count();
@@ -53,7 +59,7 @@ fs::path buffer_path(const fs::path& checkpoint) {
 }
 
 ScalarLogObserver::ScalarLogObserver(const fs::path& directory, bool resuming, int64_t first_step)
-    : log_(directory, resuming), start_(Clock::now()), first_step_(first_step) {}
+    : log_(directory, resuming, first_step), start_(Clock::now()), first_step_(first_step) {}
 
 bool ScalarLogObserver::on_iteration(const Progress& p) {
   const double elapsed = seconds_between(start_, Clock::now());
@@ -80,10 +86,11 @@ EvaluationObserver::EvaluationObserver(const Experiment& experiment, const fs::p
       algorithm_(algorithm),
       training_env_(training_env),
       last_timesteps_(algorithm.num_timesteps()) {
-  const bool exists = fs::exists(directory_ / "eval.csv");
-  file_.open(directory_ / "eval.csv", std::ios::app);
-  if (!exists) file_ << "timesteps,mean_return,std_return,mean_length,episodes\n";
-  if (resuming && experiment_.eval_save_best) recall_best(last_timesteps_);
+  if (resuming) {
+    restore(last_timesteps_);
+  } else {
+    write_file_atomically(directory_ / "eval.csv", kEvalHeader, "eval.csv");
+  }
 }
 
 bool EvaluationObserver::on_iteration(const Progress& progress) {
@@ -105,10 +112,10 @@ EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
   double mean_length = 0.0;
   for (int64_t length : eval.lengths) mean_length += static_cast<double>(length);
   mean_length /= static_cast<double>(eval.lengths.size());
-  file_ << timesteps << ',' << exact_text(eval.mean_return()) << ','
-        << exact_text(eval.std_return()) << ',' << mean_length << ',' << eval.returns.size()
-        << '\n';
-  file_.flush();
+  std::ostringstream row;
+  row << timesteps << ',' << exact_text(eval.mean_return()) << ',' << exact_text(eval.std_return())
+      << ',' << mean_length << ',' << eval.returns.size() << '\n';
+  append_to_file(directory_ / "eval.csv", row.str(), "eval.csv");
   if (experiment_.eval_save_best && (!best_mean_ || eval.mean_return() >= *best_mean_)) {
     algorithm_.save_policy(directory_ / "best_model.policy");
     best_mean_ = eval.mean_return();
@@ -117,27 +124,40 @@ EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
   return eval;
 }
 
-void EvaluationObserver::recall_best(int64_t up_to) {
-  std::ifstream in(directory_ / "eval.csv");
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::stringstream cells(line);
-    std::string timesteps_cell, mean_cell;
-    std::getline(cells, timesteps_cell, ',');
-    std::getline(cells, mean_cell, ',');
-    try {
-      const int64_t timesteps = std::stoll(timesteps_cell);
-      const double mean = std::stod(mean_cell);
-      if (timesteps > up_to) continue;
-      if (!best_mean_ || mean >= *best_mean_) {
-        best_mean_ = mean;
-        best_timesteps_ = timesteps;
-      }
-    } catch (const std::exception&) {
-      throw Error("unreadable row '" + line + "'", (directory_ / "eval.csv").string());
+void EvaluationObserver::restore(int64_t up_to) {
+  const fs::path file = directory_ / "eval.csv";
+  if (fs::exists(file) && !fs::is_regular_file(file)) {
+    throw Error("not a regular file: evaluations cannot be logged", file.string());
+  }
+  std::ifstream stream(file, std::ios::binary);
+  const std::string original((std::istreambuf_iterator<char>(stream)),
+                             std::istreambuf_iterator<char>());
+  // A row cut short by a kill (no newline yet) is dropped; its evaluation comes again.
+  std::istringstream in(original.substr(0, original.rfind('\n') + 1));
+  std::string line, kept = kEvalHeader;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.empty() || (number == 1 && line + '\n' == kEvalHeader)) continue;
+    int64_t timesteps = 0;
+    double mean = 0.0;
+    const std::size_t comma = line.find(',');
+    const std::size_t next = line.find(',', comma + 1);
+    const bool parsed =
+        comma != std::string::npos && next != std::string::npos &&
+        std::from_chars(line.data(), line.data() + comma, timesteps).ptr == line.data() + comma &&
+        std::from_chars(line.data() + comma + 1, line.data() + next, mean).ptr ==
+            line.data() + next;
+    if (!parsed) {
+      throw Error("unreadable row " + std::to_string(number) + ": '" + line.substr(0, 80) + "'",
+                  file.string());
+    }
+    if (timesteps > up_to) continue;  // evaluated after the checkpoint, by a killed process
+    kept += line + '\n';
+    if (experiment_.eval_save_best && (!best_mean_ || mean >= *best_mean_)) {
+      best_mean_ = mean;
+      best_timesteps_ = timesteps;
     }
   }
+  if (kept != original) write_file_atomically(file, kept, "eval.csv");
 }
 
 CheckpointObserver::CheckpointObserver(const Experiment& experiment, const fs::path& directory,
@@ -153,10 +173,14 @@ CheckpointObserver::CheckpointObserver(const Experiment& experiment, const fs::p
 bool CheckpointObserver::on_iteration(const Progress& progress) {
   const int64_t previous = last_timesteps_;
   last_timesteps_ = progress.timesteps;
-  if (!crossed(experiment_.checkpoint_freq, previous, progress.timesteps) ||
-      progress.timesteps >= experiment_.n_timesteps) {
-    return true;
+  if (progress.timesteps >= experiment_.n_timesteps) return true;  // the run ends now anyway
+  const bool due = crossed(experiment_.checkpoint_freq, previous, progress.timesteps);
+  if (const int signal = interrupt_signal(); signal != 0) {
+    save(progress.timesteps);
+    interrupted_ = signal;
+    return false;
   }
+  if (!due) return true;
   save(progress.timesteps);
   return !(stop_at_ && progress.timesteps >= *stop_at_);
 }

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 
 #include "tendril/core/scalar_log.hpp"
@@ -17,6 +16,7 @@ namespace tendril::rl {
 // the algorithm reports.
 
 // progress.csv and the TensorBoard event file (core/scalar_log), Stable-Baselines3's names.
+// On resume, `first_step` is the checkpoint's step: rows logged past it are dropped.
 class ScalarLogObserver : public Observer {
  public:
   ScalarLogObserver(const std::filesystem::path& directory, bool resuming, int64_t first_step);
@@ -32,6 +32,9 @@ class ScalarLogObserver : public Observer {
 // best evaluation so far as best_model.policy (highest mean return; the latest of equals, which
 // has trained longest). Evaluates on a fresh environment with the training vector env's frozen
 // observation statistics and raw rewards (SB3's EvalCallback on a VecNormalize'd model).
+// eval.csv gets its header when the observer is made; on resume, rows past the checkpoint
+// (evaluations of a process killed after it) are dropped and a missing header is restored.
+// Every row is written with a check: a failed write raises Error naming eval.csv.
 class EvaluationObserver : public Observer {
  public:
   EvaluationObserver(const Experiment& experiment, const std::filesystem::path& directory,
@@ -44,27 +47,29 @@ class EvaluationObserver : public Observer {
   int64_t best_timesteps() const { return best_timesteps_; }
 
  private:
-  // On resume: the best evaluation up to the checkpoint, from eval.csv.
-  void recall_best(int64_t up_to);
+  // On resume: eval.csv up to the checkpoint, and the best evaluation in it.
+  void restore(int64_t up_to);
 
   const Experiment& experiment_;
   std::filesystem::path directory_;
   Algorithm& algorithm_;
   const envs::VecEnv& training_env_;
-  std::ofstream file_;
   int64_t last_timesteps_;
   std::optional<double> best_mean_;
   int64_t best_timesteps_ = 0;
 };
 
 // A checkpoint every `checkpoint_freq` steps (checkpoints/step_<N>.ckpt, the replay buffer
-// beside the newest one when asked), and the pause at `stop_at`.
+// beside the newest one when asked), and the pause at `stop_at`. After SIGINT/SIGTERM
+// (core/interrupt) it writes a checkpoint at the end of the current iteration and stops
+// training; `interrupted()` is then the signal.
 class CheckpointObserver : public Observer {
  public:
   CheckpointObserver(const Experiment& experiment, const std::filesystem::path& directory,
                      Algorithm& algorithm, std::optional<int64_t> stop_at,
                      std::filesystem::path last_buffer);
   bool on_iteration(const Progress& progress) override;
+  int interrupted() const { return interrupted_; }
 
  private:
   void save(int64_t timesteps);
@@ -75,6 +80,7 @@ class CheckpointObserver : public Observer {
   std::optional<int64_t> stop_at_;
   std::filesystem::path last_buffer_;
   int64_t last_timesteps_;
+  int interrupted_ = 0;
 };
 
 // The live progress line on standard error: steps, steps/s, mean return, ETA.
