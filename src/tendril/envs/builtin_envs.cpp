@@ -12,6 +12,7 @@
 #include "tendril/envs/identity/identity_box.hpp"
 #include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_env.hpp"
+#include "tendril/envs/sma_limb/learned_reach_env.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
 #include "tendril/envs/ur5/ur5_reach.hpp"
 
@@ -53,6 +54,10 @@ void register_builtin_envs(Registry& registry) {
   // limit: data collection runs for hours, tasks bring their own.
   registry.add({sma_limb::SmaLimbEnv::kId, &sma_limb::SmaLimbEnv::create, std::nullopt,
                 "SMA-actuated silicone limb: throttles in, bend-sensor readings out (twin)"});
+  // Its reaching task inside a learned model of the limb (seed 001 §5.1.1), 250 steps.
+  registry.add({sma_limb::LearnedReachEnv::kId, &sma_limb::LearnedReachEnv::create,
+                sma_limb::LearnedReachEnv::kEpisodeSteps,
+                "SMA limb reaches a goal angle inside a learned model of the limb"});
   // Seed 004 (SPEC M10): the UR5 in MuJoCo, 1000 steps of 20 ms.
   registry.add({ur5::Ur5Reach::kId, &ur5::Ur5Reach::create, ur5::Ur5Reach::kEpisodeSteps,
                 "UR5 arm reaches past an obstacle box, tool down (MuJoCo)"});
