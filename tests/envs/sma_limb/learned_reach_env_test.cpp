@@ -70,6 +70,33 @@ TEST(LearnedReachBatch, ObservationIsStateThrottlesGoalAndPower) {
   EXPECT_EQ(smaller.observation_space().size(), 10);
 }
 
+// History rows [x_k, u_{k−1}] come from the model's window, continuing across half resets.
+TEST(LearnedReachBatch, HistoryRowsAreStatesWithThePreviousThrottles) {
+  LearnedReachOptions options = never_full();
+  options.history = 3;
+  LearnedReachBatch batch(std::make_shared<CountingModel>(4), options, 1, 2);
+  EXPECT_EQ(batch.observation_size(), 14 + 18);
+  batch.reset(0);
+  batch.step(throttles(1, 2));
+  batch.step(throttles(3, 4));
+  batch.reset(0);  // half: the history stays
+  batch.step(throttles(5, 6));
+  Eigen::VectorXf observation(batch.observation_size());
+  batch.observe(0, observation);
+  const BatchMatrix& window = batch.windows().windows();
+  for (int h = 0; h < 3; ++h) {
+    const int k = 1 + h;  // rows 1, 2, 3 of a 4-row window
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(observation[14 + 6 * h + i], window(0, k * 6 + i));
+  }
+  EXPECT_EQ(observation.segment<2>(14 + 4), Eigen::Vector2f(1, 2));  // before x_{t−2}: u = (1, 2)
+  EXPECT_EQ(observation.segment<2>(14 + 10), Eigen::Vector2f(3, 4));
+  EXPECT_EQ(observation.segment<2>(14 + 16), Eigen::Vector2f(5, 6));  // u_{t−1}
+  EXPECT_EQ(observation.segment<4>(14 + 12), observation.head<4>());  // newest row is x_t
+  EXPECT_TRUE(batch.observation_space().contains(observation));
+  options.history = 5;
+  EXPECT_THROW(LearnedReachBatch(std::make_shared<CountingModel>(4), options, 1, 2), Error);
+}
+
 TEST(LearnedReachBatch, ThrottlesAreRoundedAndLimitedAsTheFirmwareTakesThem) {
   auto model = std::make_shared<CountingModel>(3);
   LearnedReachBatch batch(model, never_full(), 1, 1);

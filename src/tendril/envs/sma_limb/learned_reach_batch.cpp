@@ -32,6 +32,10 @@ LearnedReachBatch::LearnedReachBatch(std::shared_ptr<DynamicsModel> model,
               std::to_string(model_->input_dim()) + " inputs",
           kWhere);
   options_.validate(kWhere);
+  require(options_.history <= model_->window_length(),
+          "history of " + std::to_string(options_.history) +
+              " rows exceeds the model's window of " + std::to_string(model_->window_length()),
+          kWhere);
   tasks_.resize(num_envs);
   for (int i = 0; i < num_envs; ++i) {
     tasks_[i].rng = Rng(seed + static_cast<uint64_t>(i));
@@ -53,8 +57,16 @@ Space LearnedReachBatch::observation_space() const {
   low.segment<2>(8).setConstant(-static_cast<float>(options_.goal_velocity_range));
   high.segment<2>(8).setConstant(static_cast<float>(options_.goal_velocity_range));
   if (options_.power_proxy) {
-    low.tail<4>().setZero();
-    high.tail<4>().setConstant(static_cast<float>(PowerProxy(options_.power).bound(kMaxThrottle)));
+    low.segment<4>(10).setZero();
+    high.segment<4>(10).setConstant(
+        static_cast<float>(PowerProxy(options_.power).bound(kMaxThrottle)));
+  }
+  const int base = options_.power_proxy ? 14 : 10;
+  for (int k = 0; k < options_.history; ++k) {
+    low.segment<4>(base + 6 * k).setConstant(-kInf);
+    high.segment<4>(base + 6 * k).setConstant(kInf);
+    low.segment<2>(base + 6 * k + 4).setConstant(-static_cast<float>(kMaxThrottle));
+    high.segment<2>(base + 6 * k + 4).setConstant(static_cast<float>(kMaxThrottle));
   }
   return Space::box(low, high);
 }
@@ -159,13 +171,25 @@ void LearnedReachBatch::observe(int env, Eigen::Ref<Eigen::VectorXf> out) const 
   check_env(env);
   require(out.size() == observation_size(), "observation buffer of the wrong size", kWhere);
   const Task& task = tasks_[env];
-  Eigen::VectorXf current = windows_.state(env);
-  // A non-finite prediction ends the episode; the observation keeps finite values.
-  if (!current.allFinite()) current.setZero();
-  out.head<4>() = current;
+  // A non-finite prediction ends the episode; the observation keeps finite values (below).
+  out.head<4>() = windows_.state(env);
   out.segment<2>(4) = task.throttles.cast<float>();
   out.segment<4>(6) = task.goal.cast<float>();
-  if (options_.power_proxy) out.tail<4>() = task.power.power().cast<float>();
+  if (options_.power_proxy) out.segment<4>(10) = task.power.power().cast<float>();
+  const int base = options_.power_proxy ? 14 : 10;
+  const int length = windows_.length(), row = windows_.row_size();
+  const auto window = windows_.windows().row(env);
+  for (int h = 0; h < options_.history; ++h) {
+    const int k = length - options_.history + h;
+    auto slot = out.segment(base + 6 * h, 6);
+    slot.head<4>() = window.segment(k * row, 4).transpose();
+    if (k > 0) {
+      slot.tail<2>() = window.segment((k - 1) * row + 4, 2).transpose();
+    } else {
+      slot.tail<2>().setZero();
+    }
+  }
+  if (!out.allFinite()) out = out.unaryExpr([](float v) { return std::isfinite(v) ? v : 0.0f; });
 }
 
 Eigen::Vector4d LearnedReachBatch::state(int env) const {

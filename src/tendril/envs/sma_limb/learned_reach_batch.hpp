@@ -23,7 +23,9 @@ namespace tendril::envs::sma_limb {
 //
 // Observation of env i (thesis order): [θx, θy, θ̇x, θ̇y, u_x, u_y, gθx, gθy, gθ̇x, gθ̇y] and,
 // with the power proxy on, [p+x, p−x, p+y, p−y] after them (14 or 10 values); u is the
-// previous step's throttles, g the goal.
+// previous step's throttles, g the goal. With `history` = H > 0, H rows [x_k, u_{k−1}] follow,
+// oldest first, the newest being [x_t, u_{t−1}] (read from the model's window; the input before
+// the window's oldest row reads 0).
 // Resets (thesis "Terminating Conditions & Resets"): a half reset draws a new goal and keeps the
 // state and the history, so the model carries what happened across episodes; a full reset also
 // draws a new start state (at rest in its window: every row [x, 0]) — the limb after a long
@@ -39,7 +41,7 @@ class LearnedReachBatch {
                     uint64_t seed);
 
   int num_envs() const { return static_cast<int>(tasks_.size()); }
-  int observation_size() const { return options_.power_proxy ? 14 : 10; }
+  int observation_size() const { return (options_.power_proxy ? 14 : 10) + 6 * options_.history; }
   const LearnedReachOptions& options() const { return options_; }
   // Observation space (states within ±bound until an episode ends there) and the action space
   // Box(2, [−10, 10]).

@@ -43,6 +43,7 @@ LearnedReachOptions LearnedReachOptions::from_config(const Config& params) {
   options.start_angle_range = params.get_or<double>("start_angle_range", options.start_angle_range);
   options.start_velocity_range =
       params.get_or<double>("start_velocity_range", options.start_velocity_range);
+  options.history = params.get_or<int>("history", options.history);
   options.validate(params.path().empty() ? "env.params" : params.path().c_str());
   return options;
 }
@@ -54,6 +55,7 @@ void LearnedReachOptions::validate(const char* where) const {
   require(full_reset_probability >= 0.0 && full_reset_probability <= 1.0,
           "full_reset_probability must be in [0, 1], got " + std::to_string(full_reset_probability),
           where);
+  require(history >= 0, "history must be >= 0 rows, got " + std::to_string(history), where);
   for (const double range :
        {goal_angle_range, goal_velocity_range, start_angle_range, start_velocity_range}) {
     require(std::isfinite(range) && range >= 0.0 && range < bound,

@@ -37,11 +37,16 @@ struct LearnedReachOptions {
   double goal_velocity_range = 50.0;   // θ̇_goal ~ U[−50, 50]²
   double start_angle_range = 75.0;     // full reset: θ ~ U[−75, 75]²
   double start_velocity_range = 10.0;  // full reset: θ̇ ~ U[−10, 10]²
+  // Rows of the recent history appended to the observation (0: none), for policies that read
+  // it (thesis §5.1.2: a window of 100 rows of state and previous throttles, continuing across
+  // half resets). At most the model's window.
+  int history = 0;
   PowerProxy::Params power;
 
   // Reads the optional keys power_proxy, integer_throttles, dynamic_tolerance,
   // tolerance_start, tolerance_end, tolerance_steps, bound, full_reset_probability,
-  // goal_angle_range, goal_velocity_range, start_angle_range, start_velocity_range; raises Error
+  // goal_angle_range, goal_velocity_range, start_angle_range, start_velocity_range, history;
+  // raises Error
   // naming the key on a bad value.
   static LearnedReachOptions from_config(const Config& params);
   void validate(const char* where) const;

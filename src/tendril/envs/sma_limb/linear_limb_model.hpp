@@ -17,8 +17,9 @@ class LinearLimbModel final : public DynamicsModel {
   static constexpr double kNaturalFrequency = 2.0;  // ω, rad/s
   static constexpr double kGain = 9.0;              // K, degrees per throttle
 
-  // `window` rows of history (the model reads only the newest).
-  explicit LinearLimbModel(int window = 1);
+  // `window` rows of history (the model reads only the newest; 100 as seed 001's models, so
+  // policies can observe that much history).
+  explicit LinearLimbModel(int window = 100);
 
   int state_dim() const override { return 4; }
   int input_dim() const override { return 2; }
