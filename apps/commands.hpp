@@ -19,5 +19,6 @@ int record_command(const std::vector<std::string>& args);
 int plot_command(const std::vector<std::string>& args);
 int dynamics_command(const std::vector<std::string>& args);
 int rollout_command(const std::vector<std::string>& args);
+int track_command(const std::vector<std::string>& args);
 
 }  // namespace tendril::apps

@@ -57,6 +57,7 @@ TEST(TrackingLoop, PidAndWaypointsOnAScriptedPlant) {
   EXPECT_TRUE(run.finished);
   EXPECT_EQ(run.angles.row(0), Eigen::RowVector3d(10, 20, 30));
   EXPECT_EQ(run.goals.row(0), Eigen::RowVector3d(15, 30, 30));
+  EXPECT_EQ(run.first_on_path, 0);  // (0, 0) is reached before the first step
   EXPECT_NEAR(run.rmse_deg, 0.0, 1e-12);
   EXPECT_EQ(controller.dts.front(), 0.0);
   EXPECT_NEAR(controller.dts.back(), 0.1, 1e-12);
@@ -81,6 +82,11 @@ TEST(TrackingLoop, StopsAtTheStepBudgetAndCallsTheHookEachStep) {
   for (Eigen::Index k = 0; k < full.angles.cols(); ++k)
     EXPECT_LT(distance_to_path(full.angles.col(k), follower.points()), 10.0 + 2.0 * std::sqrt(2.0));
   EXPECT_LT(full.rmse_deg, 5.0);
+  // From rest at 0 the limb first travels 30° to the circle: those steps are not scored.
+  StepPlant from_rest(0.2);
+  const TrackingRun lead_in = track(from_rest, pid, follower, 1000);
+  EXPECT_GT(lead_in.first_on_path, 10);
+  EXPECT_LT(lead_in.rmse_deg, 5.0);
 }
 
 }  // namespace

@@ -19,9 +19,12 @@ TrackingRun track(TrackedLimb& limb, TrackingController& controller, WaypointFol
   std::vector<double> times;
   std::vector<Eigen::Vector2d> angles, goals, throttles;
   double previous_time = state.time_s;
+  Eigen::Index first_on_path = -1;
   for (int step = 0; step < max_steps; ++step) {
     const Eigen::Vector2d goal = follower.update(state.angles);
     if (follower.finished()) break;
+    if (first_on_path < 0 && follower.index() >= 1)
+      first_on_path = static_cast<Eigen::Index>(times.size());
     if (before_step) before_step(step, follower);
     const Eigen::Vector2d u = controller.throttles(state, goal, state.time_s - previous_time);
     previous_time = state.time_s;
@@ -46,7 +49,10 @@ TrackingRun track(TrackedLimb& limb, TrackingController& controller, WaypointFol
     run.throttles.col(k) = throttles[k];
   }
   run.finished = follower.finished();
-  run.rmse_deg = n > 0 ? tracking_rmse(run.angles, follower.points()) : 0.0;
+  run.first_on_path = first_on_path < 0 ? n : first_on_path;
+  run.rmse_deg = run.first_on_path < n
+                     ? tracking_rmse(run.angles.rightCols(n - run.first_on_path), follower.points())
+                     : 0.0;
   return run;
 }
 

@@ -55,7 +55,10 @@ struct TrackingRun {
   Eigen::Matrix2Xd goals;   // deg, the goal steered to during the step
   Eigen::Matrix2Xd throttles;
   bool finished = false;  // the last waypoint was reached within the step budget
-  double rmse_deg = 0.0;  // tracking_rmse of `angles` to the follower's path
+  // The first step after the path's first point was reached: the steps before bring the limb
+  // from wherever it rests onto the path and are not tracking.
+  Eigen::Index first_on_path = 0;
+  double rmse_deg = 0.0;  // tracking_rmse of angles[first_on_path:] to the follower's path
 };
 
 // Resets the limb, the controller and the follower, then each step: advance the follower on the
