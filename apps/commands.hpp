@@ -19,6 +19,7 @@ int record_command(const std::vector<std::string>& args);
 int plot_command(const std::vector<std::string>& args);
 int dynamics_command(const std::vector<std::string>& args);
 int rollout_command(const std::vector<std::string>& args);
+int track_command(const std::vector<std::string>& args);
 
 // "SIGINT", "SIGTERM": how the interruption of a run is reported.
 const char* signal_name(int signal);

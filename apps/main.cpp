@@ -11,6 +11,9 @@
 #ifdef TENDRIL_WITH_RL
 #include "tendril/nn/threads.hpp"
 #endif
+#ifdef TENDRIL_WITH_DYNAMICS
+#include "tendril/dynamics/env_model_loader.hpp"
+#endif
 
 namespace {
 
@@ -56,6 +59,10 @@ commands:
   collect <config.yaml> [--set key=value ...]
       Calibrate the SMA limb, collect its data sets (written beside their prepared form),
       replay open-loop throttles after cool-downs, or compare exploration with babbling.
+  track [circle|square|spiral|sml|all] [--limb stiff|soft] [--tip-mass KG] [--push N]
+        [--steps N] [--seed S] [--out FILE.csv]
+      Track reference paths in bend-angle space on the SMA limb twin with the PID baseline and
+      the 10° waypoint follower; print the tracking RMSE per path (--out: every step).
   dynamics fit <fit.yaml> [--set key=value ...] [--out DIR] [--quiet]
       Fit a learned dynamics model to a prepared data set; write the run directory (config,
       progress.csv, TensorBoard events, model.tdm, evaluation.csv).
@@ -86,6 +93,10 @@ int main(int argc, char** argv) {
     // One BLAS thread unless an algorithm scopes more: the other core steps environments.
     tendril::nn::configure_numerics(1);
 #endif
+#ifdef TENDRIL_WITH_DYNAMICS
+    // Environments around learned models open them from their `model` parameter.
+    tendril::dynamics::install_model_loader();
+#endif
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
     if (args[0] == "plot") return tendril::apps::plot_command(rest);
 #ifdef TENDRIL_WITH_ENVS
@@ -98,6 +109,7 @@ int main(int argc, char** argv) {
 #endif
 #ifdef TENDRIL_WITH_DATA
     if (args[0] == "collect") return tendril::apps::collect_command(rest);
+    if (args[0] == "track") return tendril::apps::track_command(rest);
 #endif
 #ifdef TENDRIL_WITH_RL
     if (args[0] == "train") return tendril::apps::train_command(rest);

@@ -17,15 +17,26 @@ namespace {
 using testing::error_message;
 
 TEST(Registry, ListsTheBuiltinReferenceTasks) {
-  EXPECT_EQ(registered_ids(),
-            (std::vector<std::string>{
-                "Beam/ArcFollow-v0", "Beam/EllipseFollow-v0", "Beam/EnergyAwareFollow-v0",
-                "Beam/TrajectoryFollow-v0", "CartPole-v1", "Elastica/OrientedReach-v0",
-                "Elastica/StructuredObstacles-v0", "Elastica/Tracking3D-v0",
-                "Elastica/UnstructuredObstacles-v0", "Identity-v0", "IdentityBox-v0",
-                "MountainCarContinuous-v0", "Pendulum-v1", "PneumaticArm/Reach-v0",
-                "PneumaticArm/Robot-v0", "Safety/DoubleIntegrator-v0", "Safety/DubinsCar-v0",
-                "SmaLimb/Robot-v0", "UR5/Reach-v0"}));
+  EXPECT_EQ(registered_ids(), (std::vector<std::string>{"Beam/ArcFollow-v0",
+                                                        "Beam/EllipseFollow-v0",
+                                                        "Beam/EnergyAwareFollow-v0",
+                                                        "Beam/TrajectoryFollow-v0",
+                                                        "CartPole-v1",
+                                                        "Elastica/OrientedReach-v0",
+                                                        "Elastica/StructuredObstacles-v0",
+                                                        "Elastica/Tracking3D-v0",
+                                                        "Elastica/UnstructuredObstacles-v0",
+                                                        "Identity-v0",
+                                                        "IdentityBox-v0",
+                                                        "MountainCarContinuous-v0",
+                                                        "Pendulum-v1",
+                                                        "PneumaticArm/Reach-v0",
+                                                        "PneumaticArm/Robot-v0",
+                                                        "Safety/DoubleIntegrator-v0",
+                                                        "Safety/DubinsCar-v0",
+                                                        "SmaLimb/LearnedReach-v0",
+                                                        "SmaLimb/Robot-v0",
+                                                        "UR5/Reach-v0"}));
   EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
   EXPECT_EQ(builtin_registry().spec("CartPole-v1").max_episode_steps, 500);
   EXPECT_EQ(builtin_registry().spec("MountainCarContinuous-v0").max_episode_steps, 999);
@@ -44,7 +55,7 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
             "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/Reach-v0, "
             "PneumaticArm/Robot-v0, Safety/DoubleIntegrator-v0, Safety/DubinsCar-v0, "
-            "SmaLimb/Robot-v0, UR5/Reach-v0");
+            "SmaLimb/LearnedReach-v0, SmaLimb/Robot-v0, UR5/Reach-v0");
 }
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {

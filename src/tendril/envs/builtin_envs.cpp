@@ -14,6 +14,7 @@
 #include "tendril/envs/pneumatic/robot_env.hpp"
 #include "tendril/envs/safe_control/double_integrator.hpp"
 #include "tendril/envs/safe_control/dubins_car.hpp"
+#include "tendril/envs/sma_limb/learned_reach_env.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
 #include "tendril/envs/ur5/ur5_reach.hpp"
 
@@ -61,6 +62,10 @@ void register_builtin_envs(Registry& registry) {
                 std::nullopt, "double integrator kept in |x| < 2 m, |v| < 3 m/s (safety filter)"});
   registry.add({safe_control::DubinsCar::kId, &safe_control::DubinsCar::create, std::nullopt,
                 "Dubins car to a goal past a keep-out disc (safety filter)"});
+  // Its reaching task inside a learned model of the limb (seed 001 §5.1.1), 250 steps.
+  registry.add({sma_limb::LearnedReachEnv::kId, &sma_limb::LearnedReachEnv::create,
+                sma_limb::LearnedReachEnv::kEpisodeSteps,
+                "SMA limb reaches a goal angle inside a learned model of the limb"});
   // Seed 004 (SPEC M10): the UR5 in MuJoCo, 1000 steps of 20 ms.
   registry.add({ur5::Ur5Reach::kId, &ur5::Ur5Reach::create, ur5::Ur5Reach::kEpisodeSteps,
                 "UR5 arm reaches past an obstacle box, tool down (MuJoCo)"});

@@ -1,0 +1,115 @@
+// `tendril track`: seed 001's tracking experiments (thesis §5.2, Tables 5.4–5.5) on the SMA limb
+// behind its robot interface — the twin here — with the PID baseline and the waypoint follower.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "command_line.hpp"
+#include "commands.hpp"
+#include "tendril/control/reference_patterns.hpp"
+#include "tendril/control/tracking_loop.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/data/prepare.hpp"
+#include "tendril/envs/sma_limb/sma_limb_env.hpp"
+
+namespace tendril::apps {
+
+namespace {
+
+// The limb as a deployed controller sees it: each reading passed through the same state
+// estimate as the training data (data::StateFilter, thesis eqs. 4.5 and 4.7).
+class RobotLimb final : public control::TrackedLimb {
+ public:
+  RobotLimb(envs::sma_limb::SmaLimbEnv& robot, uint64_t seed) : robot_(robot), seed_(seed) {}
+
+  control::LimbState reset() override {
+    filter_.reset();
+    return state(robot_.reset(seed_));
+  }
+  control::LimbState apply(const Eigen::Vector2d& throttles) override {
+    const Step step = robot_.step(throttles.cast<float>());
+    require(!step.terminated, "the limb's state became non-finite", "tendril track");
+    return state(step.observation);
+  }
+
+ private:
+  control::LimbState state(const Observation& reading) {
+    const Eigen::Vector2d angles(reading[0], reading[1]);
+    const Eigen::Vector4d x = filter_.update(reading[2], angles);
+    return control::LimbState{.time_s = reading[2], .angles = x.head<2>(), .rates = x.tail<2>()};
+  }
+
+  envs::sma_limb::SmaLimbEnv& robot_;
+  uint64_t seed_;
+  data::StateFilter filter_;
+};
+
+void write_run(const std::filesystem::path& file, const std::string& pattern,
+               const control::TrackingRun& run, bool append) {
+  std::ofstream out(file, append ? std::ios::app : std::ios::trunc);
+  require(static_cast<bool>(out), "cannot write", file.string());
+  if (!append) out << "pattern,step,time_s,theta_x,theta_y,goal_x,goal_y,u_x,u_y\n";
+  for (Eigen::Index k = 0; k < run.angles.cols(); ++k) {
+    out << pattern << ',' << k << ',' << run.times[k] << ',' << run.angles(0, k) << ','
+        << run.angles(1, k) << ',' << run.goals(0, k) << ',' << run.goals(1, k) << ','
+        << run.throttles(0, k) << ',' << run.throttles(1, k) << '\n';
+  }
+}
+
+}  // namespace
+
+int track_command(const std::vector<std::string>& args) {
+  const CommandLine line =
+      CommandLine::parse(args, {"limb", "tip-mass", "push", "steps", "seed", "out"}, {});
+  require(line.positional.size() <= 1, "usage: tendril track [PATTERN|all] [options]",
+          "tendril track");
+  const std::string which = line.positional.empty() ? "all" : line.positional[0];
+  std::vector<std::string> patterns = control::reference_pattern_names();
+  if (which != "all") patterns = {which};
+  const std::string limb = line.value("limb", "stiff");
+  const double tip_mass = std::stod(line.value("tip-mass", "0"));
+  const double push_n = std::stod(line.value("push", "0"));
+  const int max_steps = std::stoi(line.value("steps", "3000"));
+  const uint64_t seed = std::stoull(line.value("seed", "0"));
+  const std::string out = line.value("out", "");
+  require(!out.empty() ? !std::filesystem::exists(out) : true,
+          "refusing to overwrite an existing file", out);
+
+  std::printf("PID (Kp 2, Ki 0.001, Kd 0.5) on the %s limb twin, tip mass %.3f kg%s\n",
+              limb.c_str(), tip_mass, push_n > 0 ? ", pushes at 1/4 and 3/4" : "");
+  std::printf("%-8s %8s %9s %10s\n", "pattern", "steps", "finished", "RMSE [deg]");
+  bool first = true;
+  for (const std::string& pattern : patterns) {
+    Config params = Config::parse("limb: " + limb + "\ntip_mass: " + std::to_string(tip_mass) +
+                                  "\nseed: " + std::to_string(seed));
+    auto env = envs::sma_limb::SmaLimbEnv::create(params);
+    auto& robot = dynamic_cast<envs::sma_limb::SmaLimbEnv&>(*env);
+    RobotLimb limb_under_control(robot, seed);
+    control::WaypointFollower follower(control::reference_pattern(pattern));
+    control::PidController pid;
+    const int points = static_cast<int>(follower.points().cols());
+    int pushes = 0;
+    // Seed 001 §5.2.2 (a): a shove at 1/4 and 3/4 of the path, here along +x for 0.2 s.
+    auto disturb = [&](int, const control::WaypointFollower& f) {
+      if (push_n <= 0.0) return;
+      const int due = pushes == 0 ? points / 4 : pushes == 1 ? 3 * points / 4 : points + 1;
+      if (f.index() >= due) {
+        robot.apply_push(Eigen::Vector2d(push_n, 0.0), 0.2);
+        ++pushes;
+      }
+    };
+    const control::TrackingRun run =
+        control::track(limb_under_control, pid, follower, max_steps, disturb);
+    std::printf("%-8s %8ld %9s %10.2f\n", pattern.c_str(), static_cast<long>(run.angles.cols()),
+                run.finished ? "yes" : "no", run.rmse_deg);
+    if (!out.empty()) write_run(out, pattern, run, !first);
+    first = false;
+  }
+  if (!out.empty()) std::printf("wrote %s\n", out.c_str());
+  return 0;
+}
+
+}  // namespace tendril::apps
