@@ -8,7 +8,8 @@
 // Two sizes: SB3's SAC defaults (256×256 networks, batch 256) and small networks (64×64,
 // batch 100), each with the networks' products on one and on two threads (`learner_threads`;
 // the environment runs in the calling thread, so the second core is free). The LibTorch
-// reference always runs on one thread, as SB3 runs best.
+// reference always runs on one thread, as SB3 runs best. Stable-Baselines3 2.3.2's own SAC with
+// its defaults (256×256, batch 256) is measured in the same run (sb3_baseline.hpp).
 //
 //   build/bench/off_policy_bench [repeats]      (default 3; medians are reported)
 #include <torch/torch.h>
@@ -18,9 +19,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "sb3_baseline.hpp"
 #include "tendril/nn/blas.hpp"
 #include "tendril/nn/dense_mlp.hpp"
 #include "tendril/nn/threads.hpp"
@@ -189,11 +192,18 @@ int run(int repeats) {
       "Off-policy training on Pendulum-v1, 1 env, 1 gradient step per env step; medians of %d "
       "runs\n\n",
       repeats);
+  const std::optional<double> sb3 = bench::sb3_pendulum_steps_per_second("sac", 1500);
+  if (sb3) {
+    std::printf("Stable-Baselines3 2.3.2 SAC (256x256, batch 256), this run: %.0f steps/s\n\n",
+                *sb3);
+  } else {
+    std::printf("Stable-Baselines3 baseline unavailable (../shared/vendor or anchors missing)\n\n");
+  }
   std::printf(
       "| algorithm | networks, batch | learner threads | loop steps/s | bound steps/s (bare "
       "passes) | loop / bound | "
-      "LibTorch passes steps/s | loop: env s | inference s | update s |\n");
-  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+      "LibTorch passes steps/s | loop: env s | inference s | update s | SAC 256 loop vs SB3 |\n");
+  std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const Case& c : cases) {
     std::vector<double> loop_rates, bound_rates, torch_rates, env, inference, update;
     for (int r = 0; r < repeats; ++r) {
@@ -206,11 +216,14 @@ int run(int repeats) {
       bound_rates.push_back(1.0 / bare_passes(c, bare_steps));
       torch_rates.push_back(1.0 / libtorch_passes(c, bare_steps));
     }
-    std::printf("| %s | %lldx%lld, %lld | %d | %.0f | %.0f | %.2f | %.0f | %.2f | %.2f | %.2f |\n",
-                c.algorithm == "sac" ? "SAC" : "TD3", static_cast<long long>(c.hidden),
-                static_cast<long long>(c.hidden), static_cast<long long>(c.batch), c.threads,
-                median(loop_rates), median(bound_rates), median(loop_rates) / median(bound_rates),
-                median(torch_rates), median(env), median(inference), median(update));
+    const bool sb3_sized = c.algorithm == "sac" && c.hidden == 256 && c.batch == 256;
+    const std::string ratio = sb3 && sb3_sized ? bench::ratio_text(median(loop_rates) / *sb3) : "-";
+    std::printf(
+        "| %s | %lldx%lld, %lld | %d | %.0f | %.0f | %.2f | %.0f | %.2f | %.2f | %.2f | %s |\n",
+        c.algorithm == "sac" ? "SAC" : "TD3", static_cast<long long>(c.hidden),
+        static_cast<long long>(c.hidden), static_cast<long long>(c.batch), c.threads,
+        median(loop_rates), median(bound_rates), median(loop_rates) / median(bound_rates),
+        median(torch_rates), median(env), median(inference), median(update), ratio.c_str());
     std::fflush(stdout);
   }
   return 0;

@@ -8,15 +8,18 @@
 //
 //   build/bench/ppo_pendulum_bench [repeats]      (default 3; medians are reported)
 //
-// SB3's figure (a reference measurement: SB3 2.3 on Debian torch 1.13, one thread) cannot
-// be re-measured here: SB3 is not packaged for Debian.
+// The baseline, measured in the same run: Stable-Baselines3 2.3.2's PPO with the same defaults
+// on Gymnasium's Pendulum-v1, torch on one thread (sb3_baseline.hpp), 20,480 steps.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
+#include "sb3_baseline.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/nn/actor_critic.hpp"
 #include "tendril/nn/adam.hpp"
@@ -30,7 +33,6 @@
 namespace tendril::rl {
 namespace {
 
-constexpr double kSb3StepsPerSecond = 2800.0;
 constexpr int64_t kStepsPerRun = 32768;  // 16 rollouts of 1 env, 2 rollouts of 8 envs
 constexpr int64_t kBareMinibatches = 2000;
 
@@ -115,7 +117,7 @@ double bare_minibatch_ms() {
   return 1e3 * seconds_since(start) / static_cast<double>(kBareMinibatches);
 }
 
-void print_loop(int n_envs, const std::vector<LoopFigures>& runs) {
+void print_loop(int n_envs, const std::vector<LoopFigures>& runs, std::optional<double> sb3) {
   std::vector<double> rates, env, inference, update, per_minibatch;
   for (const auto& run : runs) {
     rates.push_back(run.steps_per_second());
@@ -125,24 +127,30 @@ void print_loop(int n_envs, const std::vector<LoopFigures>& runs) {
     per_minibatch.push_back(run.update_ms_per_minibatch());
   }
   const auto [slowest, fastest] = std::minmax_element(rates.begin(), rates.end());
-  std::printf("| %d | %.0f | %.0f–%.0f | %.2fx | %.2f | %.2f | %.2f | %.0f | %.3f |\n", n_envs,
-              median(rates), *slowest, *fastest, median(rates) / kSb3StepsPerSecond, median(env),
-              median(inference), median(update), runs.front().minibatches, median(per_minibatch));
+  const std::string ratio = sb3 ? bench::ratio_text(median(rates) / *sb3) : "-";
+  std::printf("| %d | %.0f | %.0f–%.0f | %s | %.2f | %.2f | %.2f | %.0f | %.3f |\n", n_envs,
+              median(rates), *slowest, *fastest, ratio.c_str(), median(env), median(inference),
+              median(update), runs.front().minibatches, median(per_minibatch));
 }
 
 int run(int repeats) {
   nn::configure_numerics(1);
   std::printf("PPO, Pendulum-v1, SB3 defaults, %lld env steps per run, median of %d runs\n\n",
               static_cast<long long>(kStepsPerRun), repeats);
+  const std::optional<double> sb3 = bench::sb3_pendulum_steps_per_second("ppo", 20480);
+  if (sb3) {
+    std::printf("Stable-Baselines3 2.3.2, same settings, this run: %.0f steps/s\n\n", *sb3);
+  } else {
+    std::printf("Stable-Baselines3 baseline unavailable (../shared/vendor or anchors missing)\n\n");
+  }
   std::printf(
-      "| envs | steps/s | range | vs SB3 (%.0f) | env s | inference s | update s | minibatches "
-      "| update ms/minibatch |\n",
-      kSb3StepsPerSecond);
+      "| envs | steps/s | range | vs SB3 | env s | inference s | update s | minibatches "
+      "| update ms/minibatch |\n");
   std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (int n_envs : {1, 8}) {
     std::vector<LoopFigures> runs;
     for (int r = 0; r < repeats; ++r) runs.push_back(train_once(n_envs));
-    print_loop(n_envs, runs);
+    print_loop(n_envs, runs, sb3);
   }
   std::printf("\nBare minibatch step (64 rows: evaluate, PPO loss, gradient, clip, Adam):\n");
   std::vector<double> bare;
