@@ -11,6 +11,7 @@
 #include "command_line.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/rl/trainer.hpp"
 #include "tendril/safety/safety_experiment.hpp"
 
 namespace tendril::apps {
@@ -34,7 +35,7 @@ int evaluate(const std::filesystem::path& run, double epsilon, int episodes, uin
   std::printf("%d episodes (reset seeds %llu, ...), epsilon_2 = %g\n", episodes,
               static_cast<unsigned long long>(seed), epsilon);
   print_evaluation("task", result.unfiltered);
-  print_evaluation("filtered", result.filtered);
+  if (result.filtered) print_evaluation("filtered", *result.filtered);
   return 0;
 }
 
@@ -78,12 +79,23 @@ int safety_command(const std::vector<std::string>& args) {
           "usage: tendril safety eval <run-dir> [--epsilon E] [--episodes N] [--seed S]",
           "command line");
   const std::filesystem::path run = line.positional[0];
-  const safety::SafetyExperiment experiment =
-      safety::SafetyExperiment::from_config(Config::load_file(run / "config.yaml"));
+  // A run of `safety train` brings its evaluation settings; any other run is judged unfiltered.
+  int default_episodes = 100;
+  double default_epsilon = 0.0;
+  uint64_t default_seed = 0;
+  if (std::filesystem::exists(run / "safety.critic")) {
+    const safety::SafetyExperiment experiment =
+        safety::SafetyExperiment::from_config(Config::load_file(run / "config.yaml"));
+    default_episodes = experiment.eval_episodes;
+    default_epsilon = experiment.eval_epsilon;
+    default_seed = experiment.task.seed;
+  } else {
+    default_seed = rl::load_run_experiment(run).seed;
+  }
   const int episodes = static_cast<int>(
-      line.integer("episodes", experiment.eval_episodes, 1, std::numeric_limits<int>::max()));
-  return evaluate(run, parse_epsilon(line, experiment.eval_epsilon), episodes,
-                  line.unsigned_integer("seed", experiment.task.seed));
+      line.integer("episodes", default_episodes, 1, std::numeric_limits<int>::max()));
+  return evaluate(run, parse_epsilon(line, default_epsilon), episodes,
+                  line.unsigned_integer("seed", default_seed));
 }
 
 }  // namespace tendril::apps

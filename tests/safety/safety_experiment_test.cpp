@@ -8,6 +8,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/policy.hpp"
+#include "tendril/rl/trainer.hpp"
 #include "tendril/safety/safety_critic.hpp"
 
 namespace tendril::safety {
@@ -110,15 +111,42 @@ TEST(SafetyExperiment, TrainsWritesTheCriticAndEvaluatesWithAndWithoutTheFilter)
   EXPECT_LT(critic->state_value(Eigen::Vector3f(1.9f, 2.8f, 0.0f)), 0.0);
 
   const RunSafetyEvaluation never = evaluate_safety_run(run, -1e9, 10, 7);
-  EXPECT_DOUBLE_EQ(never.filtered.intervention_rate, 0.0);
-  EXPECT_EQ(never.filtered.mean_return, never.unfiltered.mean_return);
-  EXPECT_EQ(never.filtered.safety_rate, never.unfiltered.safety_rate);
+  ASSERT_TRUE(never.filtered);
+  EXPECT_DOUBLE_EQ(never.filtered->intervention_rate, 0.0);
+  EXPECT_EQ(never.filtered->mean_return, never.unfiltered.mean_return);
+  EXPECT_EQ(never.filtered->safety_rate, never.unfiltered.safety_rate);
   const RunSafetyEvaluation always = evaluate_safety_run(run, 1e9, 10, 7);
-  EXPECT_DOUBLE_EQ(always.filtered.intervention_rate, 1.0);
+  ASSERT_TRUE(always.filtered);
+  EXPECT_DOUBLE_EQ(always.filtered->intervention_rate, 1.0);
   EXPECT_EQ(always.unfiltered.mean_return, never.unfiltered.mean_return);
 
   EXPECT_THROW(train_with_safety(e, run), Error);
   EXPECT_TRUE(std::filesystem::exists(run / "safety.critic"));
+}
+
+// The reward-penalty baseline is a plain run (no safety agent): evaluated unfiltered, with the
+// returns of the task reward alone (the penalty switched off), on the same episodes as the
+// same policy would be without it.
+TEST(SafetyExperiment, PlainRunsAreEvaluatedUnfilteredWithoutThePenalty) {
+  const Config config = Config::parse(
+      "algorithm: dqn\nenv: {id: Safety/DoubleIntegrator-v0, params: {discrete_actions: 3, "
+      "horizon: 50, unsafe_penalty: 100.0}}\nalgo: {net_arch: [8], learning_starts: 100}\n"
+      "n_timesteps: 500\nseed: 1\neval: {episodes: 2}");
+  const auto run = fresh_directory("plain");
+  rl::TrainOptions quiet;
+  quiet.quiet = true;
+  rl::train(rl::Experiment::from_config(config), run, quiet);
+  const RunSafetyEvaluation result = evaluate_safety_run(run, 0.0, 20, 11);
+  EXPECT_FALSE(result.filtered);
+  const auto policy = rl::load_policy(run / "model.policy");
+  auto env =
+      envs::make("Safety/DoubleIntegrator-v0", Config::parse("discrete_actions: 3\nhorizon: 50"));
+  Rng rng(11);
+  const SafetyEvaluation expected =
+      evaluate_safety(*env, *constraint_of(*env), policy_actor(*policy, true, rng), 20, 11);
+  ASSERT_LT(expected.safety_rate, 1.0);  // some episode is penalized, so the penalty would show
+  EXPECT_EQ(result.unfiltered.mean_return, expected.mean_return);
+  EXPECT_EQ(result.unfiltered.safety_rate, expected.safety_rate);
 }
 
 }  // namespace

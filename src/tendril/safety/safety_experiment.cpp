@@ -11,6 +11,7 @@
 #include "tendril/rl/dqn/q_greedy_policy.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/sac/sac.hpp"
+#include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 #include "tendril/safety/safety_critic.hpp"
 
@@ -154,25 +155,32 @@ SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const T
 
 RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directory, double epsilon,
                                         int episodes, uint64_t seed) {
-  const SafetyExperiment experiment =
-      SafetyExperiment::from_config(Config::load_file(run_directory / "config.yaml"));
+  const bool has_critic = std::filesystem::exists(run_directory / "safety.critic");
+  const rl::Experiment task =
+      has_critic
+          ? SafetyExperiment::from_config(Config::load_file(run_directory / "config.yaml")).task
+          : rl::load_run_experiment(run_directory);
+  require(!task.env.normalize_observation,
+          "safety is judged on raw observations: the run normalizes them", run_directory.string());
   const auto policy = rl::load_policy(run_directory / "model.policy");
-  const auto critic = load_safety_critic(run_directory / "safety.critic");
-  auto env = envs::make(experiment.task.env.id, experiment.task.env.params);
+  Config params = task.env.params;
+  if (params.has("unsafe_penalty")) params.set("unsafe_penalty", "0");
+  auto env = envs::make(task.env.id, params);
   const auto constraint = constraint_of(*env);
 
   RunSafetyEvaluation result;
   result.epsilon = epsilon;
   Rng task_rng(seed);
   result.unfiltered = evaluate_safety(
-      *env, *constraint, policy_actor(*policy, experiment.eval_deterministic, task_rng), episodes,
-      seed);
+      *env, *constraint, policy_actor(*policy, task.eval_deterministic, task_rng), episodes, seed);
+  if (!has_critic) return result;
+  const auto critic = load_safety_critic(run_directory / "safety.critic");
   Rng filtered_rng(seed);
-  SafetyFilter filter(policy_actor(*policy, experiment.eval_deterministic, filtered_rng), *critic,
+  SafetyFilter filter(policy_actor(*policy, task.eval_deterministic, filtered_rng), *critic,
                       epsilon);
   result.filtered = evaluate_safety(
       *env, *constraint, [&filter](const Observation& x) { return filter.act(x); }, episodes, seed);
-  result.filtered.intervention_rate = filter.intervention_rate();
+  result.filtered->intervention_rate = filter.intervention_rate();
   return result;
 }
 

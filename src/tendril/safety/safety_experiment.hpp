@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "tendril/core/config.hpp"
@@ -73,10 +74,13 @@ struct SafetyEvaluation {
 SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
                                  int episodes, uint64_t seed);
 
-// A run of train_with_safety evaluated on the same episodes without and with the filter at ε₂.
+// A run of train_with_safety evaluated on the same episodes without and with the filter at ε₂;
+// a run of `tendril train` (no safety.critic, e.g. the reward-penalty baseline) without it.
+// Returns are the task reward's: an environment's `unsafe_penalty` is set to 0 for this.
 struct RunSafetyEvaluation {
   double epsilon = 0.0;
-  SafetyEvaluation unfiltered, filtered;
+  SafetyEvaluation unfiltered;
+  std::optional<SafetyEvaluation> filtered;
 };
 RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directory, double epsilon,
                                         int episodes, uint64_t seed);

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "tendril/core/error.hpp"
 
@@ -70,6 +71,22 @@ TEST(DubinsCar, StartsInTheLowerLeftAndRejectsBadParams) {
   }
   EXPECT_THROW(DubinsCar::create(Config::parse("start_high: -0.5")), Error);
   EXPECT_THROW(DubinsCar::create(Config::parse("sped: 1")), Error);
+}
+
+// The reward-penalty baseline: −penalty on a step into the keep-out disc, nothing outside it.
+TEST(DubinsCar, UnsafePenaltyIsSubtractedOnlyInTheUnsafeSet) {
+  DubinsCar::Params penalized;
+  penalized.unsafe_penalty = 5.0;
+  DubinsCar plain, with_penalty(penalized);
+  for (DubinsCar* env : {&plain, &with_penalty}) env->reset(0);
+  for (auto [x, y] : {std::pair{-1.5, -1.5}, std::pair{-1.0, 0.0}}) {  // safe; enters the disc
+    plain.set_state(x, y, 0.0);
+    with_penalty.set_state(x, y, 0.0);
+    const Step a = plain.step(Action::Constant(1, 0.0f));
+    const Step b = with_penalty.step(Action::Constant(1, 0.0f));
+    EXPECT_DOUBLE_EQ(a.info.get("unsafe").value(), x == -1.0 ? 1.0 : 0.0);
+    EXPECT_DOUBLE_EQ(b.reward, a.reward - 5.0 * a.info.get("unsafe").value());
+  }
 }
 
 }  // namespace
