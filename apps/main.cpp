@@ -69,6 +69,11 @@ commands:
   dynamics eval <run-dir|model.tdm> <data.csv> [--split test|train] [--horizons 60,1800]
                 [--out FILE.csv] [--open-loop DIR]
       One-step and rollout RMSE of a model on a data set; open-loop sine/square/sawtooth runs.
+  safety train <experiment.yaml> [--set key=value ...] [--out DIR]
+  safety eval <run-dir> [--epsilon E] [--episodes N] [--seed S]
+      Train a task agent with a safety agent co-trained from its rollouts (the experiment's
+      `safety:` section; writes model.policy and safety.critic); evaluate return and safety
+      rate of the task policy with and without the safety filter at threshold E.
   list-envs
       The registered environment ids.
   help
@@ -117,6 +122,9 @@ int main(int argc, char** argv) {
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
     if (args[0] == "record") return tendril::apps::record_command(rest);
     if (args[0] == "rollout") return tendril::apps::rollout_command(rest);
+#endif
+#ifdef TENDRIL_WITH_SAFETY
+    if (args[0] == "safety") return tendril::apps::safety_command(rest);
 #endif
 #ifdef TENDRIL_WITH_DYNAMICS
     if (args[0] == "dynamics") return tendril::apps::dynamics_command(rest);

@@ -68,8 +68,7 @@ Action Policy::act(const Observation& observation, bool deterministic, Rng& rng)
   return actions.row(0).transpose();
 }
 
-void Policy::save(const std::filesystem::path& file,
-                  const std::optional<ObservationNormalization>& normalization) const {
+ArchiveWriter Policy::archive(const std::optional<ObservationNormalization>& normalization) const {
   ArchiveWriter writer("policy");
   writer.put("format", kPolicyFormat);
   writer.put("kind", kind());
@@ -81,11 +80,19 @@ void Policy::save(const std::filesystem::path& file,
     writer.put("normalization_epsilon", normalization->epsilon);
   }
   write(writer);
-  writer.commit(file);
+  return writer;
 }
 
-std::unique_ptr<Policy> load_policy(const std::filesystem::path& file) {
-  const ArchiveReader reader(file, "policy");
+void Policy::save(const std::filesystem::path& file,
+                  const std::optional<ObservationNormalization>& normalization) const {
+  archive(normalization).commit(file);
+}
+
+std::string Policy::serialize() const { return archive(normalization_).serialize(); }
+
+namespace {
+
+std::unique_ptr<Policy> read_policy(const ArchiveReader& reader) {
   const int64_t format = reader.get_int("format");
   if (format != kPolicyFormat) {
     throw Error("policy format " + std::to_string(format) + " is not supported (this build reads " +
@@ -113,6 +120,16 @@ std::unique_ptr<Policy> load_policy(const std::filesystem::path& file) {
     throw Error(e.what(), reader.name());
   }
   return policy;
+}
+
+}  // namespace
+
+std::unique_ptr<Policy> load_policy(const std::filesystem::path& file) {
+  return read_policy(ArchiveReader(file, "policy"));
+}
+
+std::unique_ptr<Policy> load_policy_bytes(std::string bytes, const std::string& name) {
+  return read_policy(ArchiveReader::from_bytes(std::move(bytes), "policy", name));
 }
 
 void write_mlp(ArchiveWriter& writer, const std::string& prefix, const nn::DenseMlp& mlp) {

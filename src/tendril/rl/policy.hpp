@@ -62,6 +62,8 @@ class Policy {
   void save(const std::filesystem::path& file) const { save(file, normalization_); }
   void save(const std::filesystem::path& file,
             const std::optional<ObservationNormalization>& normalization) const;
+  // The model file's bytes (what `save` writes), for files that embed a policy.
+  std::string serialize() const;
 
  protected:
   Policy(Space observation_space, Space action_space);
@@ -74,6 +76,8 @@ class Policy {
   virtual void write(ArchiveWriter& writer) const = 0;
 
  private:
+  ArchiveWriter archive(const std::optional<ObservationNormalization>& normalization) const;
+
   Space observation_space_, action_space_;
   std::optional<ObservationNormalization> normalization_;
   mutable Eigen::MatrixXf columns_, action_columns_;
@@ -82,6 +86,8 @@ class Policy {
 // Reads a model file written by Policy::save. Raises Error naming the file on anything that is
 // not an intact policy file of a known kind.
 std::unique_ptr<Policy> load_policy(const std::filesystem::path& file);
+// The same for a model file's bytes (Policy::serialize); `name` stands for the file in messages.
+std::unique_ptr<Policy> load_policy_bytes(std::string bytes, const std::string& name);
 
 // A DenseMlp's shape (sizes, hidden activation, tanh output) in and out of archives.
 void write_mlp(ArchiveWriter& writer, const std::string& prefix, const nn::DenseMlp& mlp);

@@ -83,6 +83,15 @@ std::function<void()> QCritics::prepare_load(const ArchiveReader& reader,
   };
 }
 
+void QCritics::set_parameters(const Eigen::VectorXf& parameters) {
+  require(parameters.size() == parameters_.size(),
+          "critic parameters have " + std::to_string(parameters.size()) + " values, expected " +
+              std::to_string(parameters_.size()),
+          "rl::QCritics");
+  parameters_ = parameters;
+  target_ = parameters;
+}
+
 void concatenate_rows(const Eigen::Ref<const Eigen::MatrixXf>& top,
                       const Eigen::Ref<const Eigen::MatrixXf>& bottom, Eigen::MatrixXf& inputs) {
   inputs.resize(top.rows() + bottom.rows(), top.cols());

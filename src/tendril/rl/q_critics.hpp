@@ -47,6 +47,9 @@ class QCritics {
   std::function<void()> prepare_load(const ArchiveReader& reader, const std::string& prefix);
 
   const Eigen::VectorXf& parameters() const { return parameters_; }
+  // Sets the online and target parameters (a model file's critics); raises Error on a wrong size.
+  void set_parameters(const Eigen::VectorXf& parameters);
+  const nn::DenseMlp& network(int i) const { return networks_.at(static_cast<std::size_t>(i)); }
 
  private:
   Eigen::Ref<const Eigen::VectorXf> slice(const Eigen::VectorXf& all, int i) const {

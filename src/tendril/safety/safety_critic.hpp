@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <filesystem>
 #include <memory>
 
 #include "tendril/core/rng.hpp"
@@ -22,7 +23,21 @@ class SafetyCritic {
   double state_value(const Observation& observation) const {
     return value(observation, safe_action(observation));
   }
+
+  // Writes a safety critic file (an archive of kind "safety_critic", checksummed, atomic) that
+  // load_safety_critic turns back into a critic with the same values and safe actions. Raises
+  // Error for a critic without a file form (one scripted in code).
+  void save(const std::filesystem::path& file) const;
+
+ protected:
+  // "sac" or "dqn" ("" when the critic has no file form), and the kind's own entries.
+  virtual std::string kind() const { return ""; }
+  virtual void write(ArchiveWriter& /*writer*/) const {}
 };
+
+// Reads a file written by SafetyCritic::save: a critic that owns what it reads. Raises Error
+// naming the file on anything that is not an intact safety critic file of a known kind.
+std::unique_ptr<SafetyCritic> load_safety_critic(const std::filesystem::path& file);
 
 // A SAC safety agent: Q_s is the smaller of its twin critics (as in SAC's own targets) and the
 // greedy action is the actor's mean, which the actor trains towards argmax_u Q_s. Holds a copy
@@ -30,10 +45,17 @@ class SafetyCritic {
 class SacSafetyCritic : public SafetyCritic {
  public:
   SacSafetyCritic(const rl::Policy& actor, const rl::QCritics& critics);
+  // Owns its actor (a critic read from a file).
+  SacSafetyCritic(std::unique_ptr<const rl::Policy> actor, const rl::QCritics& critics);
   double value(const Observation& observation, const Action& action) const override;
   Action safe_action(const Observation& observation) const override;
 
+ protected:
+  std::string kind() const override { return "sac"; }
+  void write(ArchiveWriter& writer) const override;
+
  private:
+  std::unique_ptr<const rl::Policy> owned_actor_;
   const rl::Policy& actor_;
   mutable rl::QCritics critics_;
   mutable Rng unused_rng_;
@@ -45,12 +67,19 @@ class SacSafetyCritic : public SafetyCritic {
 class DqnSafetyCritic : public SafetyCritic {
  public:
   explicit DqnSafetyCritic(const rl::QGreedyPolicy& q_policy);
+  // Owns its network (a critic read from a file).
+  explicit DqnSafetyCritic(std::unique_ptr<const rl::QGreedyPolicy> q_policy);
   double value(const Observation& observation, const Action& action) const override;
   Action safe_action(const Observation& observation) const override;
+
+ protected:
+  std::string kind() const override { return "dqn"; }
+  void write(ArchiveWriter& writer) const override;
 
  private:
   const Eigen::MatrixXf& q_values(const Observation& observation) const;
 
+  std::unique_ptr<const rl::QGreedyPolicy> owned_q_policy_;
   const rl::QGreedyPolicy& q_policy_;
   mutable nn::DenseMlp::Tape tape_;
 };

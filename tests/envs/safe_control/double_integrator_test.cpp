@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "tendril/core/error.hpp"
 
@@ -108,6 +109,22 @@ TEST(DoubleIntegrator, StartsInTheSafeBoxAndRejectsBadParams) {
   EXPECT_THROW(DoubleIntegrator::create(Config::parse("dt: -1")), Error);
   EXPECT_THROW(DoubleIntegrator::create(Config::parse("horizn: 10")), Error);
   EXPECT_THROW(DoubleIntegrator::create(Config::parse("absolute_position_limit: 1.5")), Error);
+}
+
+// The reward-penalty baseline: the same step, with the penalty only where x' is unsafe.
+TEST(DoubleIntegrator, UnsafePenaltyIsSubtractedOnlyInTheUnsafeSet) {
+  DoubleIntegrator::Params penalized;
+  penalized.unsafe_penalty = 10.0;
+  DoubleIntegrator plain, with_penalty(penalized);
+  for (DoubleIntegrator* env : {&plain, &with_penalty}) env->reset(0);
+  for (auto [x, v] : {std::pair{0.5, 0.0}, std::pair{1.99, 2.0}}) {
+    plain.set_state(x, v);
+    with_penalty.set_state(x, v);
+    const Step a = plain.step(Action::Constant(1, 0.0f));
+    const Step b = with_penalty.step(Action::Constant(1, 0.0f));
+    EXPECT_DOUBLE_EQ(a.info.get("unsafe").value(), x > 1.0 ? 1.0 : 0.0);
+    EXPECT_DOUBLE_EQ(b.reward, a.reward - 10.0 * a.info.get("unsafe").value());
+  }
 }
 
 }  // namespace

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "tendril/core/error.hpp"
 
@@ -70,6 +72,44 @@ TEST(DubinsCar, StartsInTheLowerLeftAndRejectsBadParams) {
   }
   EXPECT_THROW(DubinsCar::create(Config::parse("start_high: -0.5")), Error);
   EXPECT_THROW(DubinsCar::create(Config::parse("sped: 1")), Error);
+}
+
+// The reward-penalty baseline: −penalty on a step into the keep-out disc, nothing outside it.
+TEST(DubinsCar, UnsafePenaltyIsSubtractedOnlyInTheUnsafeSet) {
+  DubinsCar::Params penalized;
+  penalized.unsafe_penalty = 5.0;
+  DubinsCar plain, with_penalty(penalized);
+  for (DubinsCar* env : {&plain, &with_penalty}) env->reset(0);
+  for (auto [x, y] : {std::pair{-1.5, -1.5}, std::pair{-1.0, 0.0}}) {  // safe; enters the disc
+    plain.set_state(x, y, 0.0);
+    with_penalty.set_state(x, y, 0.0);
+    const Step a = plain.step(Action::Constant(1, 0.0f));
+    const Step b = with_penalty.step(Action::Constant(1, 0.0f));
+    EXPECT_DOUBLE_EQ(a.info.get("unsafe").value(), x == -1.0 ? 1.0 : 0.0);
+    EXPECT_DOUBLE_EQ(b.reward, a.reward - 5.0 * a.info.get("unsafe").value());
+  }
+}
+
+// The safe set is reachable from every start: a scripted controller that steers onto the
+// counter-clockwise circle of radius 1.5 m about the keep-out disc (ω = 0.8 rad/s on it) keeps
+// whole episodes out of X_unsafe. What a safety agent on this environment can reach.
+TEST(DubinsCar, AScriptedOrbitKeepsEveryStartSafe) {
+  DubinsCar env;
+  for (uint64_t seed = 0; seed < 50; ++seed) {
+    Observation o = env.reset(seed);
+    bool safe = true, done = false;
+    while (!done) {
+      const double r = std::hypot(o[0], o[1]), angle = std::atan2(o[1], o[0]);
+      const double desired = angle + std::numbers::pi / 2 + std::atan(2.0 * (r - 1.5));
+      const double error = std::remainder(desired - std::atan2(o[3], o[2]), 2 * std::numbers::pi);
+      const Step step =
+          env.step(Action::Constant(1, static_cast<float>(std::clamp(3.0 * error, -2.0, 2.0))));
+      safe = safe && step.info.get("unsafe").value() == 0.0;
+      done = step.terminated || step.truncated;
+      o = step.observation;
+    }
+    EXPECT_TRUE(safe) << "reset seed " << seed;
+  }
 }
 
 }  // namespace

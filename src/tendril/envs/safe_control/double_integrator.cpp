@@ -23,6 +23,7 @@ std::unique_ptr<Env> DoubleIntegrator::create(const Config& params) {
   p.discrete_actions = params.get_or("discrete_actions", p.discrete_actions);
   p.start_position = params.get_or("start_position", p.start_position);
   p.start_velocity = params.get_or("start_velocity", p.start_velocity);
+  p.unsafe_penalty = params.get_or("unsafe_penalty", p.unsafe_penalty);
   params.reject_unknown();
   return std::make_unique<DoubleIntegrator>(p);
 }
@@ -101,6 +102,7 @@ Step DoubleIntegrator::step(const Action& action) {
   result.truncated = !result.terminated && elapsed_steps_ >= params_.horizon;
   const double margin = safety_margin(params_, position_, velocity_);
   const double unsafe = margin <= 0.0 ? 1.0 : 0.0;
+  result.reward -= params_.unsafe_penalty * unsafe;
   result.info.set("safety_margin", margin);
   result.info.set("unsafe", unsafe);
   result.info.set(info_keys::kCost, unsafe);

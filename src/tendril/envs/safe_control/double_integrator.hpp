@@ -46,6 +46,9 @@ class DoubleIntegrator : public Env {
     // Starts uniform in [−start_position, start_position] × [−start_velocity, start_velocity].
     double start_position = 2.0;  // m
     double start_velocity = 3.0;  // m/s
+    // The reward-penalty baseline of seed 001 Table 6.1: subtracted from the reward of every step
+    // that ends in X_unsafe (the thesis gives no size; 0 leaves the task reward alone).
+    double unsafe_penalty = 0.0;
   };
   // Registry factory; params are the fields of Params by name.
   static std::unique_ptr<Env> create(const Config& params);

@@ -30,6 +30,7 @@ std::unique_ptr<Env> DubinsCar::create(const Config& params) {
   p.start_high = params.get_or("start_high", p.start_high);
   p.heading_low = params.get_or("heading_low", p.heading_low);
   p.heading_high = params.get_or("heading_high", p.heading_high);
+  p.unsafe_penalty = params.get_or("unsafe_penalty", p.unsafe_penalty);
   params.reject_unknown();
   return std::make_unique<DubinsCar>(p);
 }
@@ -114,6 +115,7 @@ Step DubinsCar::step(const Action& action) {
   result.truncated = !result.terminated && elapsed_steps_ >= params_.horizon;
   const double margin = safety_margin(params_, x_, y_);
   const double unsafe = margin <= 0.0 ? 1.0 : 0.0;
+  result.reward -= params_.unsafe_penalty * unsafe;
   result.info.set("safety_margin", margin);
   result.info.set("unsafe", unsafe);
   result.info.set(info_keys::kCost, unsafe);
