@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tendril/core/error.hpp"
+#include "tendril/nn/gradient.hpp"
 
 namespace tendril::rl {
 
@@ -64,23 +65,28 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
   const int64_t a = action_size();
   double actor_loss_sum = 0.0, critic_loss_sum = 0.0, ent_coef_sum = 0.0, ent_loss_sum = 0.0;
 
+  int64_t actor_steps = 0;
+
   for (int64_t step = 0; step < gradient_steps; ++step) {
+    // The actor and α step when this update's count is a multiple of policy_delay (TD3's rule).
+    const bool actor_step = (gradient_updates() + 1) % config_.policy_delay == 0;
     buffer().sample(batch_size, sample_rng(), batch_);
     // gSDE: one exploration matrix for the whole batch, new at every gradient step (SB3).
     if (config_.use_sde) exploration_ = policy_.standard_normal_matrix(sample_rng());
-    policy_.sample(batch_.observations, sample_rng(), exploration_, current_);
+    if (actor_step) policy_.sample(batch_.observations, sample_rng(), exploration_, current_);
 
     // α: minimise −log α · (log π + H̄) (eq. 18), with α taken before its own step, as SB3.
     const auto ent_coef = static_cast<float>(entropy_coefficient());
-    if (config_.auto_entropy) {
+    if (config_.auto_entropy && actor_step) {
       const double mean_term =
           (policy_.log_probs_of(current_).array() + static_cast<float>(target_entropy_))
               .cast<double>()
               .mean();
       ent_loss_sum += -static_cast<double>(log_ent_coef_[0]) * mean_term;
+      Eigen::VectorXf gradient = Eigen::VectorXf::Constant(1, static_cast<float>(-mean_term));
+      if (config_.max_grad_norm) nn::clip_grad_norm(gradient, *config_.max_grad_norm);
       ent_coef_optimizer_.set_learning_rate(learning_rate);
-      ent_coef_optimizer_.step(log_ent_coef_,
-                               Eigen::VectorXf::Constant(1, static_cast<float>(-mean_term)));
+      ent_coef_optimizer_.step(log_ent_coef_, gradient);
     }
     ent_coef_sum += ent_coef;
 
@@ -106,8 +112,13 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
     value_gradient_ = (critics_.values().rowwise() - targets.transpose()) * inverse_batch;
     critic_loss_sum += 0.5 * static_cast<double>(value_gradient_.squaredNorm()) * batch_size;
     critics_.backward(value_gradient_, /*parameters=*/true, nullptr);
-    critics_.step(learning_rate);
+    critics_.step(learning_rate, config_.max_grad_norm);
 
+    if (!actor_step) {
+      finish_update();
+      continue;
+    }
+    ++actor_steps;
     // Actor step on mean(α log π(a|s) − min_i Q_i(s, a)), a = tanh(μ + σ ε)  (eq. 12), through
     // the just-updated critics.
     concatenate_rows(batch_.observations, policy_.actions_of(current_), critic_inputs_);
@@ -139,22 +150,30 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
     }
     actor.backward(actor_parameters.head(network), current_.tape, actor_output_gradient_,
                    actor_gradient_.head(network), nullptr, actor_scratch_);
+    if (config_.max_grad_norm) nn::clip_grad_norm(actor_gradient_, *config_.max_grad_norm);
     actor_optimizer_.set_learning_rate(learning_rate);
     actor_optimizer_.step(actor_parameters, actor_gradient_);
     actor_gradient_.setZero();
-
-    count_update();
-    if (gradient_updates() % config_.target_update_interval == 0) {
-      critics_.update_target(config_.common.tau);
-    }
+    finish_update();
   }
   const auto n = static_cast<double>(gradient_steps);
-  TrainStats stats{{"train/actor_loss", actor_loss_sum / n},
-                   {"train/critic_loss", critic_loss_sum / n},
+  TrainStats stats{{"train/critic_loss", critic_loss_sum / n},
                    {"train/ent_coef", ent_coef_sum / n},
                    {"train/learning_rate", learning_rate}};
-  if (config_.auto_entropy) stats.emplace_back("train/ent_coef_loss", ent_loss_sum / n);
+  // Means over the steps that updated the actor and α; none when this call had none.
+  if (actor_steps > 0) {
+    const auto m = static_cast<double>(actor_steps);
+    stats.insert(stats.begin(), {"train/actor_loss", actor_loss_sum / m});
+    if (config_.auto_entropy) stats.emplace_back("train/ent_coef_loss", ent_loss_sum / m);
+  }
   return stats;
+}
+
+void Sac::finish_update() {
+  count_update();
+  if (gradient_updates() % config_.target_update_interval == 0) {
+    critics_.update_target(config_.common.tau);
+  }
 }
 
 void Sac::write_own_state(ArchiveWriter& writer) const {

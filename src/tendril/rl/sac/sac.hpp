@@ -39,6 +39,9 @@ class Sac : public OffPolicyAlgorithm {
  private:
   using PolicySample = SquashedGaussianPolicy::Sample;
 
+  // Counts the gradient step and updates the targets every target_update_interval steps.
+  void finish_update();
+
   SacConfig config_;
   double target_entropy_ = 0.0;
   SquashedGaussianPolicy policy_;   // the actor: its parameters are trained in place

@@ -17,6 +17,15 @@ struct SacConfig {
   double ent_coef = 1.0;                 // the fixed α, or the initial α when learned
   std::optional<double> target_entropy;  // unset: −dim(A)
   int64_t target_update_interval = 1;    // gradient steps between target updates
+  // Critic updates per actor and α update (TD3's delayed policy update; the SAC of seed 001,
+  // Table A.1, "policy network update frequency" 2): the actor and α step at the gradient steps
+  // whose count is a multiple of it. 1: every step (SB3).
+  int64_t policy_delay = 1;
+  // Clip the gradients of the critics (one norm over both, one optimizer as in SB3), of the
+  // actor (its log σ included under gSDE) and of log α to this L2 norm before their Adam steps
+  // (torch.nn.utils.clip_grad_norm_; seed 001, Table A.1, "max gradient size" 1.0); unset: none
+  // (SB3).
+  std::optional<double> max_grad_norm;
   // Clip the critics' regression targets to ±q_clip (a guard against divergence in long runs
   // with large rewards); unset: no clipping.
   std::optional<double> q_clip;
