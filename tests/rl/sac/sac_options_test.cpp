@@ -1,6 +1,7 @@
 // SAC's delayed actor update (policy_delay) and gradient-norm clipping (max_grad_norm).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "support/error_message.hpp"
@@ -59,6 +60,7 @@ TEST(SacOptions, ConfigKeysAndDefaults) {
   EXPECT_EQ(set.policy_delay, 2);
   EXPECT_EQ(set.max_grad_norm, 1.0);
   EXPECT_FALSE(SacConfig::from_config(Config::parse("max_grad_norm: none")).max_grad_norm);
+  EXPECT_FALSE(defaults.compensate_policy_delay);
   const auto refused = [](const std::string& yaml) {
     return error_message([&] { SacConfig::from_config(Config::parse(yaml)); });
   };
@@ -96,6 +98,32 @@ TEST(SacOptions, WithoutDelayTheActorStepsEveryTime) {
     EXPECT_TRUE(has(setup.sac->update(1), "train/actor_loss"));
     EXPECT_NE(setup.sac->actor(), actor) << step;
     actor = setup.sac->actor();
+  }
+}
+
+TEST(SacOptions, CompensationMakesUpTheSkippedActorAndAlphaSteps) {
+  // One Adam step moves each parameter by at most lr = 3e-4 (|m̂| ≤ √v̂ on the first step); the
+  // two steps of the delayed update move log α, whose gradient keeps its sign, by about 2 lr.
+  const double lr = 3e-4;
+  for (const bool compensate : {false, true}) {
+    Agent agent = warmed_up("policy_delay: 2\ncompensate_policy_delay: " +
+                            std::string(compensate ? "true" : "false") + "\n");
+    SteppedSac& sac = *agent.sac;
+    const Eigen::VectorXf actor = sac.actor();
+    const double alpha = sac.entropy_coefficient();
+    sac.update(1);
+    EXPECT_EQ(sac.actor(), actor);
+    EXPECT_TRUE(has(sac.update(1), "train/actor_loss"));
+    const double actor_change = (sac.actor() - actor).cwiseAbs().maxCoeff();
+    const double alpha_change = std::abs(std::log(sac.entropy_coefficient() / alpha));
+    if (compensate) {
+      EXPECT_GT(actor_change, 1.5 * lr);
+      EXPECT_GT(alpha_change, 1.9 * lr);
+    } else {
+      EXPECT_LE(actor_change, 1.0001 * lr);
+      EXPECT_LE(alpha_change, 1.0001 * lr);
+      EXPECT_GT(alpha_change, 0.9 * lr);
+    }
   }
 }
 

@@ -39,8 +39,10 @@ class Sac : public OffPolicyAlgorithm {
  private:
   using PolicySample = SquashedGaussianPolicy::Sample;
 
-  // Counts the gradient step and updates the targets every target_update_interval steps.
-  void finish_update();
+  // One step of log α (when learned) and one of the actor on the policy's sample `current_` of
+  // `batch_`; each returns its loss.
+  double update_entropy_coefficient(double learning_rate);
+  double update_actor(float ent_coef, double learning_rate);
 
   SacConfig config_;
   double target_entropy_ = 0.0;

@@ -44,6 +44,8 @@ SacConfig SacConfig::from_config(const Config& algo) {
   config.target_update_interval =
       algo.get_or<int64_t>("target_update_interval", config.target_update_interval);
   config.policy_delay = algo.get_or<int64_t>("policy_delay", config.policy_delay);
+  config.compensate_policy_delay =
+      algo.get_or<bool>("compensate_policy_delay", config.compensate_policy_delay);
   config.max_grad_norm = algo.get_optional("max_grad_norm", config.max_grad_norm);
   config.q_clip = algo.get_optional("q_clip", config.q_clip);
   config.use_sde = algo.get_or<bool>("use_sde", config.use_sde);
