@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "tendril/core/error.hpp"
-#include "tendril/envs/registry.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -23,7 +22,7 @@ RunPolicy open_run_policy(const fs::path& run, bool best,
   if (fs::exists(file)) {
     result.source = file;
     result.policy = rl::load_policy(file);
-    result.env = envs::make(experiment.env.id, experiment.env.params);
+    result.env = rl::make_env(experiment.env);
     return result;
   }
   std::vector<std::string> skipped;

@@ -13,9 +13,10 @@
 namespace tendril::apps {
 
 // A run's trained policy and an environment to run it on, as `eval` and `record` use them: the
-// run's policy file (model.policy, or best_model.policy with `best`), which acts on the raw
-// environment; or, for a run without one (paused, interrupted), its newest checkpoint's policy
-// on an environment with the run's frozen observation statistics. Raw rewards either way.
+// run's policy file (model.policy, or best_model.policy with `best`), which acts on the
+// environment in the run's wrappers (rl::make_env); or, for a run without one (paused,
+// interrupted), its newest checkpoint's policy on an environment with the run's frozen observation
+// statistics. Raw rewards either way.
 struct RunPolicy {
   rl::Experiment experiment;
   std::filesystem::path source;  // the policy file or checkpoint it came from

@@ -26,6 +26,7 @@ Experiment Experiment::from_config(Config config) {
   const Config env = config.child("env");
   e.env.id = env.get<std::string>("id");
   e.env.params = env.child("params");
+  e.env.wrappers = env.children("wrappers");
   e.env.n_envs = env.get_or<int>("n_envs", 1);
   e.env.num_threads = env.get_or<int>("num_threads", 1);
   e.env.normalize_observation = env.get_or<bool>("normalize_observation", false);

@@ -19,6 +19,8 @@ namespace tendril::rl {
 //   env:
 //     id: Pendulum-v1
 //     params: {g: 10.0}            # the environment's own parameters
+//     wrappers:                    # around each copy, innermost first (wrapper_registry.hpp)
+//       - history_stack: {length: 4}
 //     n_envs: 4
 //     num_threads: 1               # threads stepping the environments
 //     normalize_observation: false

@@ -58,7 +58,8 @@ void QCritics::backward(const Eigen::MatrixXf& value_gradient, bool parameters,
   }
 }
 
-void QCritics::step(double learning_rate) {
+void QCritics::step(double learning_rate, std::optional<double> max_grad_norm) {
+  if (max_grad_norm) nn::clip_grad_norm(gradient_, *max_grad_norm);
   optimizer_.set_learning_rate(learning_rate);
   optimizer_.step(parameters_, gradient_);
   gradient_.setZero();

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "tendril/core/archive.hpp"
@@ -37,8 +38,9 @@ class QCritics {
   void backward(const Eigen::MatrixXf& value_gradient, bool parameters,
                 Eigen::MatrixXf* input_gradient);
 
-  // One Adam step from `gradient()`, which is then zeroed.
-  void step(double learning_rate);
+  // One Adam step from `gradient()`, which is then zeroed; with `max_grad_norm`, the gradient of
+  // all critics together is first clipped to that L2 norm (nn::clip_grad_norm).
+  void step(double learning_rate, std::optional<double> max_grad_norm = std::nullopt);
   // target ← (1 − τ) target + τ online.
   void update_target(double tau) { nn::polyak_update(target_, parameters_, tau); }
 

@@ -6,13 +6,14 @@
 #include "tendril/envs/vector/vec_normalize.hpp"
 #include "tendril/envs/wrappers/episode_statistics.hpp"
 #include "tendril/envs/wrappers/normalize_observation.hpp"
+#include "tendril/envs/wrappers/wrapper_registry.hpp"
 
 namespace tendril::rl {
 
 std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options) {
   require(options.n_envs >= 1, "n_envs must be at least 1", "rl::make_vec_env");
   auto factory = [&options](int) -> std::unique_ptr<Env> {
-    return std::make_unique<envs::EpisodeStatistics>(envs::make(options.id, options.params));
+    return std::make_unique<envs::EpisodeStatistics>(make_env(options));
   };
   std::unique_ptr<envs::VecEnv> env =
       std::make_unique<envs::ThreadedVecEnv>(options.n_envs, factory, options.num_threads);
@@ -26,9 +27,13 @@ std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options) {
   return env;
 }
 
+std::unique_ptr<Env> make_env(const VecEnvOptions& options) {
+  return envs::apply_wrappers(envs::make(options.id, options.params), options.wrappers);
+}
+
 std::unique_ptr<Env> make_evaluation_env(const VecEnvOptions& options,
                                          const envs::VecEnv& training_env) {
-  std::unique_ptr<Env> env = envs::make(options.id, options.params);
+  std::unique_ptr<Env> env = make_env(options);
   if (options.normalize_observation) {
     const envs::VecNormalize* trained = training_env.normalizer();
     require(trained != nullptr && trained->options().normalize_observation,

@@ -47,7 +47,8 @@ void HistoryStack::save_state(SnapshotWriter& out) const {
 
 void HistoryStack::load_state(SnapshotReader& in) {
   in.section("HistoryStack");
-  Observation history = history_;
+  // Sized for a full history: a wrapper that was never reset may take a saved state.
+  Observation history(static_cast<Eigen::Index>(frame_size_) * length_);
   in.get_matrix(history);
   inner_->load_state(in);
   history_ = std::move(history);

@@ -39,6 +39,11 @@ class Sac : public OffPolicyAlgorithm {
  private:
   using PolicySample = SquashedGaussianPolicy::Sample;
 
+  // One step of log α (when learned) and one of the actor on the policy's sample `current_` of
+  // `batch_`; each returns its loss.
+  double update_entropy_coefficient(double learning_rate);
+  double update_actor(float ent_coef, double learning_rate);
+
   SacConfig config_;
   double target_entropy_ = 0.0;
   SquashedGaussianPolicy policy_;   // the actor: its parameters are trained in place

@@ -43,6 +43,10 @@ SacConfig SacConfig::from_config(const Config& algo) {
   config.target_entropy = algo.get_optional("target_entropy", config.target_entropy, "auto");
   config.target_update_interval =
       algo.get_or<int64_t>("target_update_interval", config.target_update_interval);
+  config.policy_delay = algo.get_or<int64_t>("policy_delay", config.policy_delay);
+  config.compensate_policy_delay =
+      algo.get_or<bool>("compensate_policy_delay", config.compensate_policy_delay);
+  config.max_grad_norm = algo.get_optional("max_grad_norm", config.max_grad_norm);
   config.q_clip = algo.get_optional("q_clip", config.q_clip);
   config.use_sde = algo.get_or<bool>("use_sde", config.use_sde);
   config.sde_sample_freq = algo.get_or<int64_t>("sde_sample_freq", config.sde_sample_freq);
@@ -57,6 +61,8 @@ void SacConfig::validate() const {
   common.validate(where);
   require(ent_coef > 0.0, "ent_coef must be positive", where);
   require(target_update_interval >= 1, "target_update_interval must be at least 1", where);
+  require(policy_delay >= 1, "policy_delay must be at least 1", where);
+  require(!max_grad_norm || *max_grad_norm > 0.0, "max_grad_norm must be positive", where);
   require(!q_clip || *q_clip > 0.0, "q_clip must be positive", where);
   require(sde_sample_freq == -1 || sde_sample_freq >= 1, "sde_sample_freq must be -1 or positive",
           where);

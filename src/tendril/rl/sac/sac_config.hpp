@@ -17,6 +17,18 @@ struct SacConfig {
   double ent_coef = 1.0;                 // the fixed α, or the initial α when learned
   std::optional<double> target_entropy;  // unset: −dim(A)
   int64_t target_update_interval = 1;    // gradient steps between target updates
+  // Critic updates per actor and α update (TD3's delayed policy update; the SAC of seed 001,
+  // Table A.1, "policy network update frequency" 2): the actor and α step at the gradient steps
+  // whose count is a multiple of it. 1: every step (SB3).
+  int64_t policy_delay = 1;
+  // At each delayed step, make up for the skipped ones: policy_delay actor and α steps, each on
+  // a new policy sample of the same batch (CleanRL's SAC, which seed 001's code adapts).
+  bool compensate_policy_delay = false;
+  // Clip the gradients of the critics (one norm over both, one optimizer as in SB3), of the
+  // actor (its log σ included under gSDE) and of log α to this L2 norm before their Adam steps
+  // (torch.nn.utils.clip_grad_norm_; seed 001, Table A.1, "max gradient size" 1.0); unset: none
+  // (SB3).
+  std::optional<double> max_grad_norm;
   // Clip the critics' regression targets to ±q_clip (a guard against divergence in long runs
   // with large rewards); unset: no clipping.
   std::optional<double> q_clip;
@@ -33,8 +45,8 @@ struct SacConfig {
   static SacConfig sb2();
   // `preset: sb3 | sb2` and then, over it, the common off-policy keys and
   //   ent_coef (a number, `auto`, or `auto_<initial>` as SB3), target_entropy (a number or
-  //   `auto`), target_update_interval, q_clip (a number or `none`), use_sde, sde_sample_freq,
-  //   log_std_init.
+  //   `auto`), target_update_interval, policy_delay, compensate_policy_delay, max_grad_norm (a
+  //   number or `none`), q_clip (a number or `none`), use_sde, sde_sample_freq, log_std_init.
   static SacConfig from_config(const Config& algo);
 
   void validate() const;
