@@ -233,31 +233,28 @@ void ActorCritic::backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, 
                            const Eigen::Ref<const Eigen::RowVectorXf>& value_gradient,
                            Eigen::Ref<Eigen::VectorXf> parameter_gradient) const {
   distribution_backward(log_prob_gradient, entropy_gradient, tape, parameter_gradient);
-  const bool value_needs_latent =
-      spec_.shared_trunk ? policy_trunk_.has_value() : value_trunk_.has_value();
-  value_head_.mlp.backward(
-      parameters.segment(value_head_.offset, value_head_.mlp.parameter_count()),
-      tape.value_head.tape, as_matrix(value_gradient),
-      parameter_gradient.segment(value_head_.offset, value_head_.mlp.parameter_count()),
-      value_needs_latent ? &tape.value_latent_gradient : nullptr, tape.value_head.scratch);
-  if (value_trunk_) {
-    value_trunk_->mlp.backward(
-        parameters.segment(value_trunk_->offset, value_trunk_->mlp.parameter_count()),
-        tape.value_trunk.tape, tape.value_latent_gradient,
-        parameter_gradient.segment(value_trunk_->offset, value_trunk_->mlp.parameter_count()),
-        nullptr, tape.value_trunk.scratch);
-  }
+  // With a shared trunk the value head's input gradient flows on into the policy trunk.
+  value_backward(parameters, tape, value_gradient,
+                 spec_.shared_trunk ? policy_trunk_.has_value() : value_trunk_.has_value(),
+                 parameter_gradient);
   policy_backward(parameters, tape, /*with_value=*/spec_.shared_trunk, parameter_gradient);
 }
 
 void ActorCritic::backward_value(const Eigen::Ref<const Eigen::VectorXf>& parameters, Tape& tape,
                                  const Eigen::Ref<const Eigen::RowVectorXf>& value_gradient,
                                  Eigen::Ref<Eigen::VectorXf> parameter_gradient) const {
+  value_backward(parameters, tape, value_gradient, value_trunk_.has_value(), parameter_gradient);
+}
+
+void ActorCritic::value_backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, Tape& tape,
+                                 const Eigen::Ref<const Eigen::RowVectorXf>& value_gradient,
+                                 bool needs_latent_gradient,
+                                 Eigen::Ref<Eigen::VectorXf> parameter_gradient) const {
   value_head_.mlp.backward(
       parameters.segment(value_head_.offset, value_head_.mlp.parameter_count()),
       tape.value_head.tape, as_matrix(value_gradient),
       parameter_gradient.segment(value_head_.offset, value_head_.mlp.parameter_count()),
-      value_trunk_ ? &tape.value_latent_gradient : nullptr, tape.value_head.scratch);
+      needs_latent_gradient ? &tape.value_latent_gradient : nullptr, tape.value_head.scratch);
   if (value_trunk_) {
     value_trunk_->mlp.backward(
         parameters.segment(value_trunk_->offset, value_trunk_->mlp.parameter_count()),

@@ -137,6 +137,12 @@ class ActorCritic {
                              Tape& tape, Eigen::Ref<Eigen::VectorXf> parameter_gradient) const;
   // Back-propagates tape.head_gradient through the policy head and trunk (the shared trunk
   // also receives tape.value_latent_gradient when `with_value`).
+  // The value head's and value trunk's backward pass; `needs_latent_gradient`: keep the head's
+  // input gradient in tape.value_latent_gradient (for a value trunk or a shared trunk).
+  void value_backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, Tape& tape,
+                      const Eigen::Ref<const Eigen::RowVectorXf>& value_gradient,
+                      bool needs_latent_gradient,
+                      Eigen::Ref<Eigen::VectorXf> parameter_gradient) const;
   void policy_backward(const Eigen::Ref<const Eigen::VectorXf>& parameters, Tape& tape,
                        bool with_value, Eigen::Ref<Eigen::VectorXf> parameter_gradient) const;
 
