@@ -111,6 +111,7 @@ TEST_P(CheckpointFuzz, MutatedFilesLoadOrRaiseError) {
   // The algorithm still loads the intact checkpoint.
   learner->load(checkpoint);
   EXPECT_EQ(learner->num_timesteps(), steps);
+  fs::remove_all(run);
 }
 
 INSTANTIATE_TEST_SUITE_P(Algorithms, CheckpointFuzz, ::testing::Values("ppo", "sac"));

@@ -53,10 +53,21 @@ Experiment experiment(int seed = 3) {
 
 const TrainOptions kQuiet{.stop_at = std::nullopt, .quiet = true};
 
+// The scratch run directories of this program, removed when it exits.
+struct ScratchRuns {
+  std::vector<fs::path> directories;
+  ~ScratchRuns() {
+    std::error_code ignored;
+    for (const fs::path& directory : directories) fs::remove_all(directory, ignored);
+  }
+};
+ScratchRuns scratch_runs;
+
 fs::path fresh(const std::string& name) {
   const fs::path directory =
       fs::temp_directory_path() / ("tendril_faults_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(directory);
+  scratch_runs.directories.push_back(directory);
   return directory;
 }
 
