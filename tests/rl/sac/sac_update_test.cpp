@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "envs/scripted_env.hpp"
+#include "support/random_replay_buffer.hpp"
 #include "support/reference_networks.hpp"
 #include "support/scratch_directory.hpp"
 #include "tendril/core/archive.hpp"
@@ -38,23 +39,6 @@ class SacUnderTest : public Sac {
     return train(steps, progress_remaining);
   }
 };
-
-// Transitions with observations and next observations ~ N(0, 1), actions ~ U(−1, 1), rewards
-// small beside the critics' spread (so that which critic the target takes matters), a quarter
-// terminated.
-void write_buffer(const std::filesystem::path& file) {
-  ReplayBuffer buffer(kBufferSize, kObservations, kActions);
-  Rng rng(21);
-  for (int64_t i = 0; i < kBufferSize; ++i) {
-    Eigen::VectorXf observation(kObservations), next(kObservations), action(kActions);
-    for (auto& x : observation) x = static_cast<float>(rng.normal());
-    for (auto& x : next) x = static_cast<float>(rng.normal());
-    for (auto& x : action) x = static_cast<float>(rng.uniform(-1.0, 1.0));
-    buffer.add(observation, action, static_cast<float>(0.1 * rng.normal()), next,
-               rng.uniform() < 0.25);
-  }
-  buffer.save(file);
-}
 
 struct Parameters {
   Eigen::VectorXf actor, critics, critics_target, log_ent_coef;
@@ -230,7 +214,8 @@ TEST_P(SacUpdate, MatchesStableBaselines3UpdateWrittenWithAutograd) {
   const SacConfig config = SacConfig::from_config(Config::parse(algo));
   envs::ThreadedVecEnv env(1, [](int) { return std::make_unique<envs::testing::ScriptedEnv>(); });
   SacUnderTest agent(env, config, 3);
-  write_buffer(directory_ / "buffer.bin");
+  testing::write_random_replay_buffer(directory_ / "buffer.bin", kBufferSize, kObservations,
+                                      kActions, 21);
   agent.load_replay_buffer(directory_ / "buffer.bin");
 
   const int64_t actor_count =

@@ -9,6 +9,7 @@
 #include <torch/torch.h>
 
 #include "envs/scripted_env.hpp"
+#include "support/random_replay_buffer.hpp"
 #include "support/reference_networks.hpp"
 #include "support/scratch_directory.hpp"
 #include "tendril/core/archive.hpp"
@@ -34,20 +35,6 @@ class Td3UnderTest : public Td3 {
     return train(steps, progress_remaining);
   }
 };
-
-void write_buffer(const std::filesystem::path& file) {
-  ReplayBuffer buffer(kBufferSize, kObservations, kActions);
-  Rng rng(22);
-  for (int64_t i = 0; i < kBufferSize; ++i) {
-    Eigen::VectorXf observation(kObservations), next(kObservations), action(kActions);
-    for (auto& x : observation) x = static_cast<float>(rng.normal());
-    for (auto& x : next) x = static_cast<float>(rng.normal());
-    for (auto& x : action) x = static_cast<float>(rng.uniform(-1.0, 1.0));
-    buffer.add(observation, action, static_cast<float>(0.1 * rng.normal()), next,
-               rng.uniform() < 0.25);
-  }
-  buffer.save(file);
-}
 
 struct Parameters {
   Eigen::VectorXf actor, actor_target, critics, critics_target;
@@ -200,7 +187,8 @@ TEST_P(Td3Update, MatchesStableBaselines3UpdateWrittenWithAutograd) {
   ASSERT_EQ(config.target_policy_noise, settings.target_noise);
   envs::ThreadedVecEnv env(1, [](int) { return std::make_unique<envs::testing::ScriptedEnv>(); });
   Td3UnderTest agent(env, config, 4, settings.ddpg ? Td3Variant::kDdpg : Td3Variant::kTd3);
-  write_buffer(directory_ / "buffer.bin");
+  testing::write_random_replay_buffer(directory_ / "buffer.bin", kBufferSize, kObservations,
+                                      kActions, 22);
   agent.load_replay_buffer(directory_ / "buffer.bin");
 
   const int64_t actor_count =
