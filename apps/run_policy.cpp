@@ -26,7 +26,7 @@ RunPolicy open_run_policy(const fs::path& run, bool best,
     return result;
   }
   std::vector<std::string> skipped;
-  result.source = rl::newest_intact_checkpoint(run, /*needs_buffer=*/false, &skipped);
+  result.source = rl::newest_intact_checkpoint(run, &skipped);
   for (const std::string& reason : skipped) {
     std::fprintf(stderr, "skipped %s; using %s\n", reason.c_str(), result.source.c_str());
   }

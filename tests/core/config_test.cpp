@@ -62,6 +62,12 @@ TEST(Config, MalformedYamlReportsLine) {
             "list.yaml: the document must be a mapping, got a sequence");
 }
 
+TEST(Config, NestingDeeperThanTheParserTakesIsNamedAsSuch) {
+  const std::string deep = "a: " + std::string(5000, '[') + std::string(5000, ']') + "\n";
+  const std::string message = error_message([&] { Config::parse(deep, "deep.yaml"); });
+  EXPECT_EQ(message.rfind("deep.yaml: lists or mappings nested too deeply", 0), 0u) << message;
+}
+
 TEST(Config, SetOverridesAndCreatesKeys) {
   Config config = Config::parse("algo:\n  batch_size: 64\n");
   config.set("algo.batch_size", "16000");

@@ -8,6 +8,7 @@
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
+#include "tendril/core/crc32c.hpp"
 
 namespace tendril::data {
 namespace {
@@ -56,7 +57,11 @@ TEST_F(TableFile, WritesTheDocumentedLayoutAndReadsItBackExactly) {
   table.values << 0.0, -10.25, 3, 0, 0.061, -0.0001, -2, 1;
   const auto file = directory_ / "table.csv";
   write_table(file, table, schema());
-  EXPECT_EQ(read(file), kGood) << "−0.0001 is written 0.00, not -0.00";
+  // kGood with the checksum of all its bytes before the column names.
+  std::string expected = kGood;
+  const std::string checksum = checksum_text(crc32c(expected.data(), expected.size()));
+  expected.insert(expected.find("t,angle"), "# crc32c: " + checksum + "\n");
+  EXPECT_EQ(read(file), expected) << "−0.0001 is written 0.00, not -0.00";
   const Table back = read_table(file, schema());
   EXPECT_EQ(back.get("limb"), "stiff");
   ASSERT_EQ(back.rows(), 2);
@@ -64,11 +69,29 @@ TEST_F(TableFile, WritesTheDocumentedLayoutAndReadsItBackExactly) {
   EXPECT_EQ(back.values(1, 0), 0.061);
   EXPECT_EQ(back.values(1, 2), -2);
   EXPECT_EQ(back.values(1, 3), 1);
-  EXPECT_EQ(back.where(1), file.string() + ":9");
+  EXPECT_EQ(back.where(1), file.string() + ":10");
+  EXPECT_EQ(back.metadata.size(), 1u) << "the checksum is not metadata";
   // Values at the written precision round-trip exactly.
   const auto again = directory_ / "again.csv";
   write_table(again, back, schema());
   EXPECT_EQ(read(again), read(file));
+}
+
+TEST_F(TableFile, AFileChangedAfterItWasWrittenIsRefusedAndOneWithoutAChecksumIsRead) {
+  Table table;
+  table.values.resize(1, 4);
+  table.values << 0.5, 1.25, 7, 1;
+  const auto file = directory_ / "checked.csv";
+  write_table(file, table, schema());
+  std::string text = read(file);
+  const std::size_t digit = text.find("1.25");
+  ASSERT_NE(digit, std::string::npos);
+  text[digit] = '2';  // still a valid table: only the checksum can tell
+  const auto changed = write("changed.csv", text);
+  const std::string message = error_message([&] { read_table(changed, schema()); });
+  EXPECT_NE(message.find(changed.string() + ": corrupt: its CRC-32C is"), std::string::npos)
+      << message;
+  EXPECT_EQ(read_table(write("unchecked.csv", kGood), schema()).rows(), 2);
 }
 
 TEST_F(TableFile, NeverOverwritesAndRefusesValuesItCannotWrite) {

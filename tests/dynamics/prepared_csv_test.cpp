@@ -51,6 +51,19 @@ TEST_F(PreparedCsv, ReadsNamedColumnsInAnyOrderAndIgnoresOthers) {
   EXPECT_EQ(data.inputs(0, 0), 0.5);
 }
 
+TEST_F(PreparedCsv, AWrittenFileChangedLaterIsRefused) {
+  const SequenceData data = testing::SyntheticLimb{}.generate(20, 1);
+  const auto file = directory_ / "checked.csv";
+  write_prepared_csv(data, file);
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_EQ(text.rfind("# crc32c: ", 0), 0u);
+  text[text.rfind(",train")] = ';';  // one changed byte in the last row
+  const auto changed = write("changed.csv", text);
+  EXPECT_NE(error_message([&] { read_prepared_csv(changed); }).find("corrupt: its CRC-32C"),
+            std::string::npos);
+}
+
 TEST_F(PreparedCsv, WriteThenReadIsExact) {
   const SequenceData data = testing::SyntheticLimb{}.generate(50, 3);
   const auto file = directory_ / "synthetic.csv";

@@ -146,7 +146,7 @@ TEST_F(RunFaults, CorruptNewestCheckpointFallsBackToTheNewestIntactOne) {
     }
     write_text(newest, bytes);
     std::vector<std::string> skipped;
-    EXPECT_EQ(newest_intact_checkpoint(run, false, &skipped).filename(), "step_512.ckpt");
+    EXPECT_EQ(newest_intact_checkpoint(run, &skipped).filename(), "step_512.ckpt");
     ASSERT_EQ(skipped.size(), 1u);
     EXPECT_NE(skipped[0].find("step_1024.ckpt"), std::string::npos) << skipped[0];
 
@@ -164,7 +164,7 @@ TEST_F(RunFaults, NoIntactCheckpointChangesNothing) {
   write_text(only, read_text(only).substr(0, 100));
   const std::string progress = read_text(run / "progress.csv");
   const std::string message = testing::error_message([&] { resume(run, kQuiet); });
-  EXPECT_NE(message.find("no intact checkpoint"), std::string::npos) << message;
+  EXPECT_NE(message.find("no usable checkpoint"), std::string::npos) << message;
   EXPECT_NE(message.find("step_512.ckpt"), std::string::npos) << message;
   EXPECT_EQ(read_text(only).size(), 100u);
   EXPECT_EQ(read_text(run / "progress.csv"), progress);

@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "support/error_message.hpp"
+#include "tendril/core/episode_reader.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/evaluation.hpp"
@@ -194,8 +196,10 @@ checkpoint_freq: 1000
 save_replay_buffer: true
 )";
 
-Experiment off_policy_experiment() {
-  return Experiment::from_config(Config::parse(kOffPolicyExperiment, "sac.yaml"));
+Experiment off_policy_experiment(const std::vector<std::pair<std::string, std::string>>& set = {}) {
+  Config config = Config::parse(kOffPolicyExperiment, "sac.yaml");
+  for (const auto& [key, value] : set) config.set(key, value);
+  return Experiment::from_config(config);
 }
 
 TEST(Trainer, ResumedOffPolicyRunWithItsReplayBufferEqualsTheUninterruptedRun) {
@@ -227,6 +231,108 @@ TEST(Trainer, CorruptReplayBufferIsReportedAndLeftAlone) {
   EXPECT_NE(message.find("checksum"), std::string::npos) << message;
   EXPECT_EQ(read_text(buffer), bytes);
   EXPECT_EQ(read_text(run / "progress.csv"), progress);
+}
+
+// Checkpoints every 500 steps: the newest two keep their replay buffers, so a resume can fall
+// back one checkpoint and still compute what the uninterrupted run computes.
+TEST(Trainer, ResumeFallsBackPastANewestCheckpointWhoseReplayBufferIsCorrupt) {
+  const std::vector<std::pair<std::string, std::string>> every_500 = {{"checkpoint_freq", "500"}};
+  const fs::path whole = fresh("sac_whole_500"), paused = fresh("sac_fallback");
+  const TrainResult reference =
+      train(off_policy_experiment(every_500), whole, {.stop_at = std::nullopt, .quiet = true});
+  train(off_policy_experiment(every_500), paused, {.stop_at = 1500, .quiet = true});
+  const fs::path folder = paused / "checkpoints";
+  EXPECT_FALSE(fs::exists(folder / "step_500.buffer"));
+  ASSERT_TRUE(fs::exists(folder / "step_1000.buffer"));
+  const fs::path newest = folder / "step_1500.buffer";
+  std::string bytes = read_text(newest);
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x40);
+  std::ofstream(newest, std::ios::binary | std::ios::trunc) << bytes;
+
+  const TrainResult resumed = resume(paused, {.stop_at = std::nullopt, .quiet = true});
+  EXPECT_TRUE(resumed.finished);
+  EXPECT_EQ(resumed.final_eval_mean, reference.final_eval_mean);
+  EXPECT_EQ(read_text(paused / "model.policy"), read_text(whole / "model.policy"));
+  EXPECT_EQ(deterministic_progress(paused), deterministic_progress(whole));
+  EXPECT_TRUE(fs::exists(folder / "step_1500.ckpt.corrupt"));
+}
+
+TEST(Trainer, ResumeNeverPairsACheckpointWithAnotherRunsOrCheckpointsFiles) {
+  const fs::path run = fresh("sac_own"), other = fresh("sac_other");
+  train(off_policy_experiment({{"checkpoint_freq", "500"}}), run, {.stop_at = 1000, .quiet = true});
+  train(off_policy_experiment({{"checkpoint_freq", "500"}, {"seed", "6"}}), other,
+        {.stop_at = 1000, .quiet = true});
+  const fs::path folder = run / "checkpoints";
+  // The newest checkpoint with the older one's buffer (same shapes, valid file): refused by
+  // its label; the resume falls back to step_500 and its own buffer.
+  fs::copy_file(folder / "step_500.buffer", folder / "step_1000.buffer",
+                fs::copy_options::overwrite_existing);
+  const TrainResult fallen_back = resume(run, {.stop_at = 1000, .quiet = true});
+  EXPECT_EQ(fallen_back.timesteps, 1000);
+  EXPECT_TRUE(fs::exists(folder / "step_1000.ckpt.corrupt"));
+
+  // Another run's checkpoint and buffer of the same shapes: refused as belonging elsewhere.
+  for (const char* name : {"step_1000.ckpt", "step_1000.buffer"}) {
+    fs::copy_file(other / "checkpoints" / name, folder / name,
+                  fs::copy_options::overwrite_existing);
+  }
+  fs::remove(folder / "step_500.ckpt");
+  const std::string message =
+      testing::error_message([&] { resume(run, {.stop_at = std::nullopt, .quiet = true}); });
+  EXPECT_NE(message.find("belongs elsewhere: its run label"), std::string::npos) << message;
+}
+
+// The recorded evaluation episodes of a run: file name → (frames, return), ordered by name.
+std::map<std::string, std::pair<std::size_t, double>> recordings(const fs::path& run) {
+  std::map<std::string, std::pair<std::size_t, double>> found;
+  for (const auto& entry : fs::directory_iterator(run / "episodes")) {
+    const Episode episode = read_episode(entry.path());
+    EXPECT_TRUE(episode.summary.has_value()) << entry.path();
+    if (!episode.summary) continue;
+    found[entry.path().filename().string()] = {episode.frames.size(),
+                                               episode.summary->episode_return};
+  }
+  return found;
+}
+
+TEST(Trainer, RecordsTheFirstEpisodesOfEveryEvaluationAndKeepsOneTimelineOnResume) {
+  const auto recording = [] {
+    Config config = Config::parse(kExperiment, "record.yaml");
+    config.set("eval.freq", "512");
+    config.set("eval.episodes", "3");
+    config.set("eval.record", "2");
+    config.set("checkpoint_freq", "512");
+    return Experiment::from_config(config);
+  };
+  const fs::path whole = fresh("record_whole"), paused = fresh("record_paused");
+  train(recording(), whole, {.stop_at = std::nullopt, .quiet = true});
+  const auto recorded = recordings(whole);
+  // Evaluations at 512, 1024 and 1536, and the final one at 2048: two episodes each, of the
+  // 200-step time limit (the first frame is the reset).
+  ASSERT_EQ(recorded.size(), 8u);
+  for (const int64_t steps : {512, 1024, 1536, 2048}) {
+    for (const char* number : {"_0000.tep", "_0001.tep"}) {
+      const std::string name = "eval_" + std::to_string(steps) + number;
+      ASSERT_EQ(recorded.count(name), 1u) << name;
+      EXPECT_EQ(recorded.at(name).first, 201u) << name;
+    }
+  }
+  // A process killed after evaluating at 1536 but before that step's checkpoint (here: the
+  // checkpoint removed, and a recording cut short): its recordings past the checkpoint at 1024
+  // are dropped with its eval.csv rows, then made again.
+  train(recording(), paused, {.stop_at = 1536, .quiet = true});
+  fs::remove(paused / "checkpoints" / "step_1536.ckpt");
+  std::ofstream(paused / "episodes" / "eval_1536_0002.tep") << "cut short by a kill";
+  resume(paused, {.stop_at = std::nullopt, .quiet = true});
+  EXPECT_EQ(recordings(paused), recorded);
+  EXPECT_EQ(read_text(paused / "eval.csv"), read_text(whole / "eval.csv"));
+}
+
+TEST(Experiment, RecordingMoreEpisodesThanAnEvaluationRunsIsRejected) {
+  Config config = Config::parse(kExperiment, "record.yaml");
+  config.set("eval.record", "3");
+  const std::string message = testing::error_message([&] { Experiment::from_config(config); });
+  EXPECT_NE(message.find("record.yaml: eval.record"), std::string::npos) << message;
 }
 
 TEST(Trainer, ExistingRunIsNeverOverwritten) {

@@ -1,5 +1,6 @@
 #include "tendril/core/config.hpp"
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
@@ -154,6 +155,13 @@ YAML::Node parse_yaml(std::string_view text, const std::string& source) {
     if (!root.IsMap())
       throw Error("the document must be a mapping, got " + type_name(root), source);
     return root;
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp stops at a fixed depth with a message ("bad file") that names no cause.
+    throw Error("lists or mappings nested too deeply for the YAML parser (its depth limit " +
+                    std::to_string(e.depth()) + " reached at line " +
+                    std::to_string(e.mark.line + 1) + ", column " +
+                    std::to_string(e.mark.column + 1) + ")",
+                source);
   } catch (const YAML::ParserException& e) {
     throw Error("malformed YAML at line " + std::to_string(e.mark.line + 1) + ", column " +
                     std::to_string(e.mark.column + 1) + ": " + e.msg,

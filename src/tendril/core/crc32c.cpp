@@ -1,6 +1,7 @@
 #include "tendril/core/crc32c.hpp"
 
 #include <array>
+#include <cstdio>
 
 namespace tendril {
 
@@ -34,6 +35,12 @@ uint32_t crc32c(const void* data, std::size_t size) {
 uint32_t crc32(const void* data, std::size_t size) {
   static const std::array<uint32_t, 256> table = make_table(0xEDB88320u);
   return reflected_crc(table, data, size);
+}
+
+std::string checksum_text(uint32_t checksum) {
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "%08x", checksum);
+  return hex;
 }
 
 }  // namespace tendril

@@ -7,11 +7,14 @@
 #include <sstream>
 
 #include "tendril/core/atomic_file.hpp"
+#include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::data {
 
 namespace {
+
+constexpr std::string_view kChecksumKey = "crc32c";
 
 std::string location(const std::filesystem::path& file, std::size_t line) {
   return file.string() + ":" + std::to_string(line);
@@ -109,6 +112,7 @@ Table read_table(const std::filesystem::path& file, const TableSchema& schema) {
   buffer << in.rdbuf();
   const std::string text = buffer.str();
   if (text.empty()) throw Error("empty data file", location(file, 1));
+  verify_checksum(text, file);
 
   Table table;
   table.source = file;
@@ -141,7 +145,7 @@ Table read_table(const std::filesystem::path& file, const TableSchema& schema) {
           throw Error("a header comment must read '# key: value'", where);
         }
         const std::string key(line.substr(2, colon - 2));
-        if (key.rfind("column ", 0) != 0) {
+        if (key.rfind("column ", 0) != 0 && key != kChecksumKey) {
           table.metadata.emplace_back(key, std::string(line.substr(colon + 2)));
         }
         continue;
@@ -190,7 +194,8 @@ std::string format_table(const Table& table, const TableSchema& schema) {
     }
     text += "# " + key + ": " + value + "\n";
   }
-  text += joined_names(schema) + "\n";
+  const std::string comments = std::move(text);
+  text = joined_names(schema) + "\n";
   text.reserve(text.size() + static_cast<std::size_t>(table.rows()) * 12 * width);
   char field[64];
   for (Eigen::Index r = 0; r < table.rows(); ++r) {
@@ -220,7 +225,38 @@ std::string format_table(const Table& table, const TableSchema& schema) {
       text += c + 1 < width ? ',' : '\n';
     }
   }
-  return text;
+  return checksummed(comments, text);
+}
+
+std::string checksummed(const std::string& comments, const std::string& body) {
+  require(comments.empty() || comments.back() == '\n', "header comments must end a line",
+          "checksummed");
+  const std::string whole = comments + body;
+  return comments + "# " + std::string(kChecksumKey) + ": " +
+         checksum_text(crc32c(whole.data(), whole.size())) + "\n" + body;
+}
+
+void verify_checksum(const std::string& text, const std::filesystem::path& file) {
+  // Only header lines start with '#', so the first line of this form is the checksum line.
+  const std::string prefix = "# " + std::string(kChecksumKey) + ": ";
+  std::size_t begin = 0;
+  if (text.rfind(prefix, 0) != 0) {
+    begin = text.find("\n" + prefix);
+    if (begin == std::string::npos) return;  // written outside tendril: nothing to verify
+    ++begin;
+  }
+  const std::size_t end = text.find('\n', begin);
+  if (end == std::string::npos) throw Error("truncated in its checksum line", file.string());
+  const std::size_t value = begin + prefix.size();
+  const std::string stored = text.substr(value, end - value);
+  const std::string rest = text.substr(0, begin) + text.substr(end + 1);
+  const std::string computed = checksum_text(crc32c(rest.data(), rest.size()));
+  if (stored != computed) {
+    throw Error("corrupt: its CRC-32C is " + computed + ", its checksum line says " + stored +
+                    " (changed or damaged after it was written; delete that line to read a "
+                    "deliberately edited file)",
+                file.string());
+  }
 }
 
 void write_table(const std::filesystem::path& file, const Table& table, const TableSchema& schema) {

@@ -49,6 +49,7 @@ struct Table {
 //   # format: <schema.format>
 //   # column <name>: <description>          (one per column, in order)
 //   # <key>: <value>                        (the metadata, in order)
+//   # crc32c: <8 hex digits>                (CRC-32C of every byte of the file but this line)
 //   <name>,<name>,...                       (the column header)
 //   <value>,<value>,...                     (one line per row, every line ending in '\n')
 // Numbers are written with the column's decimals (integers without a point), text columns as
@@ -57,12 +58,19 @@ struct Table {
 // read_table is strict: the format line, the header and every field must be exactly as the
 // schema says, numbers finite and wholly parsed, integer columns integral, words known, and the
 // file must end with a line end (a file cut short is reported, not half-read). Every error is a
-// tendril::Error naming the file and line. write_table never replaces an existing file and
+// tendril::Error naming the file and line. A file carrying a checksum line must match it (a
+// changed or damaged data set is refused before use); a file without one (data written by
+// other software) is read as it is. write_table never replaces an existing file and
 // writes atomically (core/atomic_file.hpp); a value that the schema cannot represent (NaN, a
 // non-integral integer, an unknown word) is an Error naming the row and column.
 Table read_table(const std::filesystem::path& file, const TableSchema& schema);
 void write_table(const std::filesystem::path& file, const Table& table, const TableSchema& schema);
 // The text write_table writes.
 std::string format_table(const Table& table, const TableSchema& schema);
+// A data file's text: `comments` ('#' lines), the checksum line over both, then `body`.
+std::string checksummed(const std::string& comments, const std::string& body);
+// Raises Error naming `file` if `text` (a whole data file) carries a checksum line that does
+// not match it; for readers of these files outside read_table.
+void verify_checksum(const std::string& text, const std::filesystem::path& file);
 
 }  // namespace tendril::data

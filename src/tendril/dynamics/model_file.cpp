@@ -152,9 +152,7 @@ void save_model(const Model& model, const std::filesystem::path& file, bool repl
   bytes += "format " + std::to_string(kFormat) + "\n";
   bytes += "header_bytes " + std::to_string(header.size()) + "\n" + header;
   bytes += "payload_bytes " + std::to_string(payload.size()) + "\n" + payload;
-  char checksum[32];
-  std::snprintf(checksum, sizeof checksum, "crc32c %08x\n", crc32c(bytes.data(), bytes.size()));
-  bytes += checksum;
+  bytes += "crc32c " + checksum_text(crc32c(bytes.data(), bytes.size())) + "\n";
   write_file_atomically(file, bytes, "model file");
 }
 

@@ -4,10 +4,13 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string_view>
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/data/table.hpp"
 
 namespace tendril::dynamics {
 
@@ -59,10 +62,15 @@ void append_number(std::string& out, double value) {
 }  // namespace
 
 SequenceData read_prepared_csv(const std::filesystem::path& file, const CsvColumns& columns) {
-  std::ifstream in(file, std::ios::binary);
-  require(in.good() && std::filesystem::is_regular_file(file), "cannot open the data file",
+  std::ifstream stream(file, std::ios::binary);
+  require(stream.good() && std::filesystem::is_regular_file(file), "cannot open the data file",
           file.string());
-  // The data layer's files (data/table.hpp) open with '#' lines: format, columns, metadata.
+  const std::string text((std::istreambuf_iterator<char>(stream)),
+                         std::istreambuf_iterator<char>());
+  data::verify_checksum(text, file);
+  std::istringstream in(text);
+  // The data layer's files (data/table.hpp) open with '#' lines: format, columns, metadata,
+  // checksum.
   std::string line;
   int64_t line_number = 0;
   do {
@@ -153,7 +161,7 @@ void write_prepared_csv(const SequenceData& data, const std::filesystem::path& f
     }
     out += data.split[t] == Split::kTrain ? ",train\n" : ",test\n";
   }
-  write_file_atomically(file, out, "data set");
+  write_file_atomically(file, data::checksummed("", out), "data set");
 }
 
 }  // namespace tendril::dynamics

@@ -118,8 +118,9 @@ bool Algorithm::checkpoints_hold_environments() const {
   return !needs_reset_ && env_.supports_snapshots();
 }
 
-void Algorithm::save(const std::filesystem::path& file) const {
+void Algorithm::save(const std::filesystem::path& file, const Labels& labels) const {
   ArchiveWriter writer("checkpoint");
+  for (const auto& [key, value] : labels) writer.put("label/" + key, value);
   writer.put("format", kCheckpointFormat);
   writer.put("algorithm", name_);
   write_space(writer, "observation_space", env_.observation_space());
@@ -145,7 +146,7 @@ void Algorithm::save(const std::filesystem::path& file) const {
   writer.commit(file);
 }
 
-void Algorithm::load(const std::filesystem::path& file) {
+void Algorithm::load(const std::filesystem::path& file, const Labels& expected) {
   const ArchiveReader reader(file, "checkpoint");
   const std::string& where = reader.name();
   const int64_t format = reader.get_int("format");
@@ -154,6 +155,14 @@ void Algorithm::load(const std::filesystem::path& file) {
                     " is not supported (this build reads " + std::to_string(kCheckpointFormat) +
                     "; checkpoints of older builds cannot be resumed)",
                 where);
+  }
+  for (const auto& [key, value] : expected) {
+    require(reader.contains("label/" + key),
+            "has no " + key + " label (written outside a run, or by an older build)", where);
+    const std::string stored = reader.get_string("label/" + key);
+    require(stored == value,
+            "belongs elsewhere: its " + key + " label is " + stored + ", this one's " + value,
+            where);
   }
   const std::string algorithm = reader.get_string("algorithm");
   require(algorithm == name_, "checkpoint of " + algorithm + ", not " + name_, where);
@@ -209,7 +218,7 @@ void Algorithm::load(const std::filesystem::path& file) {
   if (!needs_reset_) last_observations_ = std::move(last_observations);
 }
 
-void Algorithm::save_replay_buffer(const std::filesystem::path& file) const {
+uint32_t Algorithm::save_replay_buffer(const std::filesystem::path& file) const {
   throw Error(name_ + " has no replay buffer", file.string());
 }
 

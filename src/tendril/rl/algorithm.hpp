@@ -6,6 +6,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tendril/core/archive.hpp"
 #include "tendril/core/rng.hpp"
@@ -50,9 +52,12 @@ class Algorithm {
   // optimizer states, random streams, counters, episode records and the vector env's state
   // (its normalization statistics; its environments when they all support snapshots).
   // Written atomically; `load` reads a checkpoint of the same algorithm, spaces and network
-  // and changes nothing on any error.
-  void save(const std::filesystem::path& file) const;
-  void load(const std::filesystem::path& file);
+  // and changes nothing on any error. `labels` tie a checkpoint to what surrounds it (the
+  // trainer's run identity and replay-buffer checksum): `load` requires every expected label to
+  // be stored with the same value.
+  using Labels = std::vector<std::pair<std::string, std::string>>;
+  void save(const std::filesystem::path& file, const Labels& labels = {}) const;
+  void load(const std::filesystem::path& file, const Labels& expected = {});
   // Whether the next checkpoint will hold the environments (all support snapshots and they
   // have been reset). When not, whoever checkpoints calls request_seeded_reset() right after,
   // so that a run resumed from the checkpoint (which must reset them) and the uninterrupted
@@ -63,7 +68,8 @@ class Algorithm {
 
   // State too large for checkpoints, kept in a file of its own (off-policy replay buffers).
   virtual bool has_replay_buffer() const { return false; }
-  virtual void save_replay_buffer(const std::filesystem::path& file) const;
+  // Returns the file's checksum (rl::replay_buffer_checksum reads it back from the file).
+  virtual uint32_t save_replay_buffer(const std::filesystem::path& file) const;
   virtual void load_replay_buffer(const std::filesystem::path& file);
 
   const std::string& name() const { return name_; }

@@ -42,8 +42,12 @@ Experiment Experiment::from_config(Config config) {
   e.eval_episodes = eval.get_or<int>("episodes", 10);
   e.eval_deterministic = eval.get_or<bool>("deterministic", true);
   e.eval_save_best = eval.get_or<bool>("save_best", false);
+  e.eval_record = eval.get_or<int>("record", 0);
   require(e.eval_freq >= 0, "must be non-negative", key(eval, "freq"));
   require(e.eval_episodes >= 1, "must be at least 1", key(eval, "episodes"));
+  require(e.eval_record >= 0 && e.eval_record <= e.eval_episodes,
+          "must lie in [0, eval.episodes] (it is " + std::to_string(e.eval_record) + ")",
+          key(eval, "record"));
   e.checkpoint_freq = config.get_or<int64_t>("checkpoint_freq", 0);
   require(e.checkpoint_freq >= 0, "must be non-negative", key(config, "checkpoint_freq"));
   e.save_replay_buffer = config.get_or<bool>("save_replay_buffer", false);

@@ -28,7 +28,7 @@ namespace tendril::rl {
 //   algo: {...}                    # the algorithm's keys (preset + overrides)
 //   n_timesteps: 500000
 //   seed: 0
-//   eval: {freq: 50000, episodes: 10, deterministic: true, save_best: false}
+//   eval: {freq: 50000, episodes: 10, deterministic: true, save_best: false, record: 0}
 //   checkpoint_freq: 100000        # environment steps between checkpoints; 0: none
 //   save_replay_buffer: false      # off-policy: keep the replay buffer with the checkpoint
 //   output: runs/ppo_pendulum      # where new runs go (a timestamp is appended)
@@ -47,6 +47,10 @@ struct Experiment {
   // Keep the model of the best evaluation so far as best_model.policy (SB3's EvalCallback with a
   // best-model path): value-based learners such as DQN can lose a solved task late in a run.
   bool eval_save_best = false;
+  // The first `eval_record` episodes of every evaluation (and of the final one) are recorded
+  // into the run's episodes/ as eval_<steps>_<NNNN>.tep (docs/episode_format.md) for
+  // `tendril serve` and `tendril plot episode`.
+  int eval_record = 0;
   int64_t checkpoint_freq = 0;
   bool save_replay_buffer = false;
   std::string output;

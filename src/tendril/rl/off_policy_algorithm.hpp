@@ -25,7 +25,9 @@ class OffPolicyAlgorithm : public Algorithm {
  public:
   bool has_replay_buffer() const override { return true; }
   // The replay buffer in and out of its own file (it can be large; SB3 saves it apart too).
-  void save_replay_buffer(const std::filesystem::path& file) const override { buffer_.save(file); }
+  uint32_t save_replay_buffer(const std::filesystem::path& file) const override {
+    return buffer_.save(file);
+  }
   void load_replay_buffer(const std::filesystem::path& file) override { buffer_.load(file); }
   const ReplayBuffer& replay_buffer() const { return buffer_; }
 

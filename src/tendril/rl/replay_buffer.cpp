@@ -93,7 +93,7 @@ void ReplayBuffer::sample(int64_t batch_size, Rng& rng, Batch& batch) const {
   }
 }
 
-void ReplayBuffer::save(const std::filesystem::path& file) const {
+uint32_t ReplayBuffer::save(const std::filesystem::path& file) const {
   std::string bytes(kMagic, sizeof kMagic);
   const int64_t header[kHeaderWords] = {kFormat,       capacity_, observation_size(),
                                         action_size(), size_,     position_};
@@ -108,6 +108,21 @@ void ReplayBuffer::save(const std::filesystem::path& file) const {
   const uint32_t checksum = crc32c(bytes.data() + sizeof kMagic, bytes.size() - sizeof kMagic);
   bytes.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
   write_file_atomically(file, bytes, "replay buffer");
+  return checksum;
+}
+
+uint32_t replay_buffer_checksum(const std::filesystem::path& file) {
+  std::ifstream stream(file, std::ios::binary | std::ios::ate);
+  require(stream.good(), "cannot open replay buffer file", file.string());
+  const std::streamoff bytes = stream.tellg();
+  require(bytes >= static_cast<std::streamoff>(sizeof kMagic + kHeaderWords * sizeof(int64_t) +
+                                               sizeof(uint32_t)),
+          "not a replay buffer file (or truncated)", file.string());
+  uint32_t stored = 0;
+  stream.seekg(bytes - static_cast<std::streamoff>(sizeof stored));
+  stream.read(reinterpret_cast<char*>(&stored), sizeof stored);
+  require(stream.good(), "cannot read replay buffer file", file.string());
+  return stored;
 }
 
 void ReplayBuffer::load(const std::filesystem::path& file) {

@@ -52,8 +52,8 @@ class ReplayBuffer {
   // Writes the stored transitions and the ring position atomically, with a CRC-32C over the
   // contents. `load` reads a file written by `save` for the same capacity and sizes; a missing,
   // truncated, corrupt or mismatching file raises Error naming the file and leaves this buffer
-  // unchanged.
-  void save(const std::filesystem::path& file) const;
+  // unchanged. `save` returns the checksum it stored.
+  uint32_t save(const std::filesystem::path& file) const;
   void load(const std::filesystem::path& file);
 
  private:
@@ -63,5 +63,9 @@ class ReplayBuffer {
   Eigen::MatrixXf observations_, actions_, next_observations_;
   Eigen::VectorXf rewards_, terminated_;
 };
+
+// The checksum stored at the end of a replay-buffer file (what `save` returned), read without
+// loading or verifying the rest; raises Error if the file is missing or too short.
+uint32_t replay_buffer_checksum(const std::filesystem::path& file);
 
 }  // namespace tendril::rl

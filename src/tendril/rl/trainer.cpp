@@ -16,6 +16,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/core/log.hpp"
 #include "tendril/core/run_lock.hpp"
+#include "tendril/rl/replay_buffer.hpp"
 #include "tendril/rl/training_observers.hpp"
 
 namespace tendril::rl {
@@ -67,9 +68,16 @@ void remove_leftovers(const fs::path& directory) {
 constexpr std::string_view kChecksumLine = "# CRC-32C of the lines above: ";
 
 std::string with_checksum(const std::string& text) {
-  char hex[16];
-  std::snprintf(hex, sizeof hex, "%08x", crc32c(text.data(), text.size()));
-  return text + std::string(kChecksumLine) + hex + "\n";
+  return text + std::string(kChecksumLine) + checksum_text(crc32c(text.data(), text.size())) + "\n";
+}
+
+// What ties a run's checkpoints to it: the checksum of its config.yaml (experiment and seed).
+// Two runs of the same file compute the same, so sharing an identity is harmless.
+std::string run_identity(const fs::path& directory) {
+  std::ifstream in(directory / "config.yaml", std::ios::binary);
+  require(in.good(), "cannot read the run's config.yaml", directory.string());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return checksum_text(crc32c(text.data(), text.size()));
 }
 
 // Whether the directory holds nothing but its lock and leftovers of atomic writes.
@@ -104,32 +112,12 @@ class Run {
         env_(make_vec_env(experiment.env)),
         algorithm_(make_algorithm(experiment, *env_)) {
     fs::create_directories(directory_ / "checkpoints");
-    fs::path last_buffer;
-    if (resuming) {
-      const bool with_buffer = algorithm_->has_replay_buffer() && experiment_.save_replay_buffer;
-      std::vector<std::string> skipped;
-      const fs::path checkpoint = newest_intact_checkpoint(directory_, with_buffer, &skipped);
-      algorithm_->load(checkpoint);
-      if (with_buffer) {
-        algorithm_->load_replay_buffer(buffer_path(checkpoint));
-        last_buffer = buffer_path(checkpoint);
-      }
-      // Only now that the run has a state: set the unusable newer checkpoints aside, keeping
-      // them for inspection; training writes their steps again.
-      for (const fs::path& newer : checkpoints(directory_)) {
-        if (newer == checkpoint) break;
-        fs::rename(newer, newer.string() + ".corrupt");
-      }
-      for (const std::string& reason : skipped) {
-        log::warning("skipped ", reason, " (kept as .corrupt); resuming from ",
-                     checkpoint.filename().string());
-      }
-      remove_leftovers(directory_);
-    }
+    const std::string identity = run_identity(directory_);
+    if (resuming) restore_newest_usable(identity);
     const int64_t first_step = algorithm_->num_timesteps();
     log_.emplace(directory_, resuming, first_step);
     evaluation_.emplace(experiment_, directory_, *algorithm_, *env_, resuming);
-    checkpoints_.emplace(experiment_, directory_, *algorithm_, options_.stop_at, last_buffer);
+    checkpoints_.emplace(experiment_, directory_, *algorithm_, options_.stop_at, identity);
     progress_line_.emplace(experiment_.n_timesteps, first_step);
   }
 
@@ -162,6 +150,33 @@ class Run {
   }
 
  private:
+  // Loads the newest checkpoint that verifies, belongs to this run and, when the run keeps its
+  // replay buffer, comes with its own intact buffer. Newer unusable checkpoints are set aside
+  // as `.corrupt` (kept for inspection; training writes their steps again).
+  void restore_newest_usable(const std::string& identity) {
+    const bool with_buffer = algorithm_->has_replay_buffer() && experiment_.save_replay_buffer;
+    const auto load = [&](const fs::path& file) {
+      Algorithm::Labels expected = {{"run", identity}};
+      if (with_buffer) {
+        const uint32_t buffer = replay_buffer_checksum(buffer_path(file));
+        expected.emplace_back("replay_buffer", checksum_text(buffer));
+      }
+      algorithm_->load(file, expected);
+      if (with_buffer) algorithm_->load_replay_buffer(buffer_path(file));
+    };
+    std::vector<std::string> skipped;
+    const fs::path checkpoint = newest_usable_checkpoint(directory_, load, &skipped);
+    for (const fs::path& newer : checkpoints(directory_)) {
+      if (newer == checkpoint) break;
+      fs::rename(newer, newer.string() + ".corrupt");
+    }
+    for (const std::string& reason : skipped) {
+      log::warning("skipped ", reason, " (kept as .corrupt); resuming from ",
+                   checkpoint.filename().string());
+    }
+    remove_leftovers(directory_);
+  }
+
   const Experiment& experiment_;
   fs::path directory_;
   TrainOptions options_;
@@ -209,17 +224,13 @@ fs::path latest_checkpoint(const fs::path& run_directory) {
   return files.front();
 }
 
-fs::path newest_intact_checkpoint(const fs::path& run_directory, bool needs_buffer,
+fs::path newest_usable_checkpoint(const fs::path& run_directory,
+                                  const std::function<void(const fs::path&)>& use,
                                   std::vector<std::string>* skipped) {
   std::vector<std::string> reasons;
   for (const fs::path& file : checkpoints(run_directory)) {
     try {
-      const ArchiveReader verified(file, "checkpoint");
-      if (needs_buffer && !fs::exists(buffer_path(file))) {
-        throw Error("its replay buffer " + buffer_path(file).filename().string() +
-                        " is missing (only the newest checkpoint keeps one)",
-                    file.string());
-      }
+      use(file);
       if (skipped) *skipped = reasons;
       return file;
     } catch (const Error& e) {
@@ -229,9 +240,16 @@ fs::path newest_intact_checkpoint(const fs::path& run_directory, bool needs_buff
   if (reasons.empty()) {
     throw Error("no checkpoint to resume from", (run_directory / "checkpoints").string());
   }
-  std::string text = "no intact checkpoint to resume from:";
+  std::string text = "no usable checkpoint to resume from:";
   for (const std::string& reason : reasons) text += "\n  " + reason;
   throw Error(text, (run_directory / "checkpoints").string());
+}
+
+fs::path newest_intact_checkpoint(const fs::path& run_directory,
+                                  std::vector<std::string>* skipped) {
+  return newest_usable_checkpoint(
+      run_directory, [](const fs::path& file) { ArchiveReader verified(file, "checkpoint"); },
+      skipped);
 }
 
 TrainResult train(const Experiment& experiment, const fs::path& run_directory,

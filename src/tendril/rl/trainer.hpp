@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -77,11 +78,15 @@ Experiment load_run_experiment(
 std::filesystem::path latest_checkpoint(const std::filesystem::path& run_directory);
 // The checkpoints of a run directory, newest first.
 std::vector<std::filesystem::path> checkpoints(const std::filesystem::path& run_directory);
-// The newest checkpoint whose archive verifies (core/archive), with its replay buffer when
-// `needs_buffer`; `skipped` receives "<file>: <reason>" for each newer one that does not.
-// Raises Error listing every reason when none is intact.
+// The newest checkpoint for which `use` (e.g. verifying or loading it) does not raise Error;
+// `skipped` receives each newer one's reason ("<file>: <reason>"). Raises Error listing every
+// reason when none is usable, or when there is no checkpoint.
+std::filesystem::path newest_usable_checkpoint(
+    const std::filesystem::path& run_directory,
+    const std::function<void(const std::filesystem::path&)>& use,
+    std::vector<std::string>* skipped = nullptr);
+// The newest checkpoint whose archive verifies (core/archive).
 std::filesystem::path newest_intact_checkpoint(const std::filesystem::path& run_directory,
-                                               bool needs_buffer,
                                                std::vector<std::string>* skipped = nullptr);
 
 }  // namespace tendril::rl

@@ -8,8 +8,11 @@
 #include <string>
 
 #include "tendril/core/atomic_file.hpp"
+#include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
+#include "tendril/envs/wrappers/episode_recorder.hpp"
+#include "tendril/rl/trainer.hpp"
 
 namespace tendril::rl {
 
@@ -105,7 +108,19 @@ bool EvaluationObserver::on_iteration(const Progress& progress) {
 
 EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
   // A stream of its own per evaluation point, so evaluating never disturbs training.
-  const std::unique_ptr<Env> env = make_evaluation_env(experiment_.env, training_env_);
+  std::unique_ptr<Env> env = make_evaluation_env(experiment_.env, training_env_);
+  if (experiment_.eval_record > 0) {
+    envs::RecordingOptions options;
+    options.directory = directory_ / "episodes";
+    options.prefix = "eval_" + std::to_string(timesteps);
+    options.max_episodes = experiment_.eval_record;
+    options.metadata = {
+        {"env", experiment_.env.id},
+        {"run", fs::absolute(directory_).lexically_normal().string()},
+        {"model", "evaluation at step " + std::to_string(timesteps)},
+        {"actions", experiment_.eval_deterministic ? "deterministic" : "stochastic"}};
+    env = std::make_unique<envs::EpisodeRecorder>(std::move(env), std::move(options));
+  }
   const EvaluationResult eval =
       evaluate_policy(algorithm_.policy(), *env, experiment_.eval_episodes,
                       experiment_.eval_deterministic, experiment_.seed + 1000003 + timesteps);
@@ -158,16 +173,36 @@ void EvaluationObserver::restore(int64_t up_to) {
     }
   }
   if (kept != original) write_file_atomically(file, kept, "eval.csv");
+  remove_recordings_after(up_to);
+}
+
+// Recordings of evaluations past the checkpoint (complete or cut short by a kill) go with their
+// eval.csv rows; `tendril record`'s files and other names are left alone.
+void EvaluationObserver::remove_recordings_after(int64_t up_to) const {
+  const fs::path folder = directory_ / "episodes";
+  if (!fs::is_directory(folder)) return;
+  std::vector<fs::path> doomed;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("eval_", 0) != 0) continue;
+    int64_t timesteps = 0;
+    const char* last = name.data() + name.size();
+    const auto [end, error] = std::from_chars(name.data() + 5, last, timesteps);
+    if (error == std::errc() && end != last && *end == '_' && timesteps > up_to) {
+      doomed.push_back(entry.path());
+    }
+  }
+  for (const fs::path& file : doomed) fs::remove(file);
 }
 
 CheckpointObserver::CheckpointObserver(const Experiment& experiment, const fs::path& directory,
                                        Algorithm& algorithm, std::optional<int64_t> stop_at,
-                                       fs::path last_buffer)
+                                       std::string run_identity)
     : experiment_(experiment),
       directory_(directory),
       algorithm_(algorithm),
       stop_at_(stop_at),
-      last_buffer_(std::move(last_buffer)),
+      run_identity_(std::move(run_identity)),
       last_timesteps_(algorithm.num_timesteps()) {}
 
 bool CheckpointObserver::on_iteration(const Progress& progress) {
@@ -186,18 +221,23 @@ bool CheckpointObserver::on_iteration(const Progress& progress) {
 }
 
 // The replay buffer goes first, so a checkpoint never exists without the buffer it needs; the
-// previous checkpoint's buffer is then removed (buffers can be large).
+// buffers of older checkpoints than the newest two are then removed (buffers can be large).
 void CheckpointObserver::save(int64_t timesteps) {
   const fs::path checkpoint = checkpoint_path(directory_, timesteps);
   const bool with_buffer = algorithm_.has_replay_buffer() && experiment_.save_replay_buffer;
-  if (with_buffer) algorithm_.save_replay_buffer(buffer_path(checkpoint));
+  Algorithm::Labels labels = {{"run", run_identity_}};
+  if (with_buffer) {
+    const uint32_t checksum = algorithm_.save_replay_buffer(buffer_path(checkpoint));
+    labels.emplace_back("replay_buffer", checksum_text(checksum));
+  }
   const bool holds_environments = algorithm_.checkpoints_hold_environments();
-  algorithm_.save(checkpoint);
+  algorithm_.save(checkpoint, labels);
   // Without the environments in the checkpoint, a resumed run restarts them here: so does
   // this one, and both compute the same.
   if (!holds_environments) algorithm_.request_seeded_reset();
-  if (with_buffer && !last_buffer_.empty()) fs::remove(last_buffer_);
-  if (with_buffer) last_buffer_ = buffer_path(checkpoint);
+  if (!with_buffer) return;
+  const std::vector<fs::path> saved = checkpoints(directory_);
+  for (std::size_t i = 2; i < saved.size(); ++i) fs::remove(buffer_path(saved[i]));
 }
 
 ProgressLine::ProgressLine(int64_t total_timesteps, int64_t first_step)

@@ -49,6 +49,8 @@ class EvaluationObserver : public Observer {
  private:
   // On resume: eval.csv up to the checkpoint, and the best evaluation in it.
   void restore(int64_t up_to);
+  // Removes the recorded episodes of evaluations after step `up_to`.
+  void remove_recordings_after(int64_t up_to) const;
 
   const Experiment& experiment_;
   std::filesystem::path directory_;
@@ -60,14 +62,16 @@ class EvaluationObserver : public Observer {
 };
 
 // A checkpoint every `checkpoint_freq` steps (checkpoints/step_<N>.ckpt, the replay buffer
-// beside the newest one when asked), and the pause at `stop_at`. After SIGINT/SIGTERM
+// beside the newest two when asked, so a resume can fall back one checkpoint), and the pause at
+// `stop_at`. Each checkpoint is labelled with `run_identity` and its replay buffer's checksum
+// (Algorithm::save), so a resume never pairs it with another run's files. After SIGINT/SIGTERM
 // (core/interrupt) it writes a checkpoint at the end of the current iteration and stops
 // training; `interrupted()` is then the signal.
 class CheckpointObserver : public Observer {
  public:
   CheckpointObserver(const Experiment& experiment, const std::filesystem::path& directory,
                      Algorithm& algorithm, std::optional<int64_t> stop_at,
-                     std::filesystem::path last_buffer);
+                     std::string run_identity);
   bool on_iteration(const Progress& progress) override;
   int interrupted() const { return interrupted_; }
 
@@ -78,7 +82,7 @@ class CheckpointObserver : public Observer {
   std::filesystem::path directory_;
   Algorithm& algorithm_;
   std::optional<int64_t> stop_at_;
-  std::filesystem::path last_buffer_;
+  std::string run_identity_;
   int64_t last_timesteps_;
   int interrupted_ = 0;
 };

@@ -32,6 +32,8 @@ std::filesystem::path EpisodeTap::next_file() {
 
 void EpisodeTap::started(const Env& env, std::optional<uint64_t> seed) {
   writer_.reset();  // an episode cut off by this reset stays incomplete
+  if (options_.max_episodes > 0 && started_ >= options_.max_episodes) return;
+  ++started_;
   EpisodeMetadata metadata = options_.metadata;
   if (seed) metadata.emplace_back("reset_seed", std::to_string(*seed));
   writer_ = std::make_unique<EpisodeWriter>(next_file(), metadata,
@@ -40,7 +42,8 @@ void EpisodeTap::started(const Env& env, std::optional<uint64_t> seed) {
 }
 
 void EpisodeTap::stepped(const Env& env, const Action& action, const Step& step) {
-  require(writer_ != nullptr, "step recorded before a reset", "EpisodeTap");
+  require(writer_ != nullptr || started_ > 0, "step recorded before a reset", "EpisodeTap");
+  if (writer_ == nullptr) return;  // past max_episodes, or the episode has ended
   EpisodeFrame frame = frame_of(env);
   frame.step = writer_->frames();
   frame.reward = step.reward;

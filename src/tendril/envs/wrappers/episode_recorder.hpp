@@ -18,6 +18,7 @@ struct RecordingOptions {
   std::filesystem::path directory;  // created when missing
   std::string prefix = "episode";   // files <prefix>_<NNNN>.tep, the first free numbers
   EpisodeMetadata metadata;         // written into every file's header (env id, run, policy, ...)
+  int max_episodes = 0;             // record only the first this many episodes; 0: all
 };
 
 struct RecordedEpisode {
@@ -46,6 +47,7 @@ class EpisodeTap {
   std::unique_ptr<EpisodeWriter> writer_;
   std::vector<RecordedEpisode> episodes_;
   int next_index_ = 0;
+  int started_ = 0;
 };
 
 // Writes every episode of the environment it wraps into its own file in a directory; an episode
