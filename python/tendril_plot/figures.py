@@ -69,7 +69,9 @@ def curves(args):
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     groups = {}
     for run in runs:
-        key = seed_group(os.path.basename(os.path.normpath(run))) if args.group == "seeds" else run
+        path = os.path.normpath(run)
+        parent = os.path.basename(os.path.dirname(os.path.abspath(path)))
+        key = seed_group(os.path.basename(path), parent) if args.group == "seeds" else run
         groups.setdefault(key, []).append(run)
     if labels and len(labels) != len(groups):
         raise PlotError(f"--labels names {len(labels)} curves, there are {len(groups)}: "

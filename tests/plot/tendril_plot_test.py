@@ -18,6 +18,7 @@ import numpy as np  # noqa: E402
 import matplotlib.image  # noqa: E402
 
 from tendril_plot.episode import EpisodeError, read_episode  # noqa: E402
+from tendril_plot.runs import seed_group  # noqa: E402
 
 RUN = os.path.join(RUNS, "sweep", "ppo_seed0")
 EPISODES = os.path.join(RUN, "episodes")
@@ -107,6 +108,18 @@ class FigureTest(unittest.TestCase):
         self.assertEqual(result.returncode, 1)
         self.assertIn(".png, .svg or .pdf", result.stderr)
         self.assertFalse(os.path.exists(out))
+
+
+class SeedGroupTest(unittest.TestCase):
+    def test_the_rule_of_the_sweep_summary(self):
+        # The cases of tests/rl/sweep_summary_test.cpp (SeedGroup): both sides group alike.
+        cases = {("n_steps_256-seed_3", ""): "n_steps_256", ("ppo_case1_seed0", ""): "ppo_case1",
+                 ("seed_3-tau_0.01", ""): "tau_0.01",
+                 ("n_steps_64-seed_12-gamma_0.9", ""): "n_steps_64-gamma_0.9",
+                 ("PPO_Seed7", ""): "PPO", ("seed_42", "ur5_ppo_base"): "ur5_ppo_base",
+                 ("seed_42", ""): "seeds", ("tau_0.01", ""): "tau_0.01"}
+        for (name, parent), group in cases.items():
+            self.assertEqual(seed_group(name, parent), group, name)
 
 
 class EpisodeReaderTest(unittest.TestCase):
