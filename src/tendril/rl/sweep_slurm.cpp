@@ -41,12 +41,13 @@ std::string slurm_script(const Sweep& sweep, const SlurmOptions& options) {
   if (name.empty()) name = "tendril-" + fs::path(sweep.output).filename().string();
 
   std::string s = "#!/bin/bash\n";
-  s += "# The sweep " + options.sweep_file.string() + " as a Slurm job array: task i of " +
-       std::to_string(tasks) + " trains runs r with r mod " + std::to_string(tasks) + " == i\n# (" +
-       std::to_string(run_count) +
-       " runs). Finished runs are kept and interrupted ones resumed, so the array can be\n"
-       "# submitted again after a time limit or a failure; the task that finds every run "
-       "finished\n# writes " +
+  const std::string k = std::to_string(tasks);
+  s += "# The sweep " + options.sweep_file.string() + "\n";
+  s += "# as a Slurm job array: task i of " + k + " trains the runs r with r mod " + k + " == i (" +
+       std::to_string(run_count) + " runs).\n";
+  s += "# Finished runs are kept and interrupted ones resumed, so the array can be submitted\n"
+       "# again after a time limit or a failure; the task that finds every run finished writes\n"
+       "# " +
        (fs::path(sweep.output) / "summary").string() + ". Submit with: sbatch <this file>\n";
   s += "#SBATCH --job-name=" + line_value(name, "--job-name") + "\n";
   s += "#SBATCH --array=0-" + std::to_string(tasks - 1) +
