@@ -94,6 +94,18 @@ class FigureTest(unittest.TestCase):
         self.assert_picture(self.draw("csv.png", "csv", *files, "--x", "time/total_timesteps",
                                       "--y", "train/entropy_loss,train/value_loss",
                                       "--kind", "scatter", "--logy", "symlog"))
+        # A sweep summary's final evaluations with their spread as error bars.
+        table = os.path.join(OUT, "configurations.csv")
+        with open(table, "w") as f:
+            f.write("configuration,algo.n_steps,final_eval_mean,final_eval_std\n"
+                    "a,256,-10,4\nb,1024,5,2\nc,4096,8,1\n")
+        self.assert_picture(self.draw("final.png", "csv", table, "--x", "algo.n_steps", "--y",
+                                      "final_eval_mean", "--yerr", "final_eval_std",
+                                      "--kind", "linepoints", "--logx"))
+        result = plot("csv", table, "--x", "algo.n_steps", "--y", "final_eval_mean", "--yerr",
+                      "final_eval_std,x", "--out", os.path.join(OUT, "never_yerr.png"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--yerr names 2 columns", result.stderr)
 
     def test_bad_input_is_named_and_writes_nothing(self):
         out = os.path.join(OUT, "never.png")
