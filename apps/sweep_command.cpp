@@ -3,8 +3,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -71,26 +73,71 @@ bool draw(const rl::SweepSummary& summary, const std::string& metric, const fs::
   return plot(args);
 }
 
+// With one grid axis besides the seed, of numbers, and two configurations or more finished: the
+// final evaluation (mean ± std over seeds) against that axis, from configurations.csv. Returns
+// false if drawing failed, and leaves `out` absent when there is nothing to draw.
+bool draw_final(const rl::SweepSummary& summary, const fs::path& table, const fs::path& out,
+                const std::string& title) {
+  const auto& configurations = summary.configurations;
+  if (configurations.empty() || configurations.front().settings.size() != 1) return true;
+  double low = 0.0, high = 0.0;
+  int finished = 0;
+  for (const rl::ConfigurationSummary& c : configurations) {
+    const std::string& text = c.settings.front().second;
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != 0) return true;
+    low = finished == 0 ? value : std::min(low, value);
+    high = finished == 0 ? value : std::max(high, value);
+    finished += c.final_eval.count > 0;
+  }
+  if (finished < 2) return true;
+  const std::string key = configurations.front().settings.front().first;
+  std::vector<std::string> args = {"csv",      table.string(),
+                                   "--x",      key,
+                                   "--y",      "final_eval_mean",
+                                   "--yerr",   "final_eval_std",
+                                   "--kind",   "linepoints",
+                                   "--labels", "mean ± std over seeds",
+                                   "--title",  title,
+                                   "--xlabel", key,
+                                   "--ylabel", "final evaluation return",
+                                   "--out",    out.string()};
+  if (low > 0.0 && high >= 10.0 * low) args.push_back("--logx");
+  return plot(args);
+}
+
 // Writes the sweep's summary (summary/ in its output): tables, curves and figures.
 int aggregate(const rl::Sweep& sweep, bool figures) {
   const rl::SweepSummary summary = rl::summarize_sweep(sweep);
   const fs::path directory = fs::path(sweep.output) / "summary";
   fs::create_directories(directory);
+  rl::write_sweep_summary(sweep, summary, directory, {});  // the tables the figures draw from
   std::vector<std::pair<std::string, std::string>> drawn;
   bool failed = false;
   if (figures) {
-    const std::string name = fs::path(sweep.output).filename().string();
-    const std::pair<const char*, const char*> kinds[] = {{"rollout/ep_rew_mean", "training.png"},
-                                                         {"eval", "evaluation.png"}};
+    std::string name = fs::absolute(sweep.output).lexically_normal().string();
+    while (name.size() > 1 && name.back() == '/') name.pop_back();
+    name = fs::path(name).filename().string();
+    const char* kinds[][2] = {{"rollout/ep_rew_mean", "training.png"},
+                              {"eval", "evaluation.png"},
+                              {"final", "final.png"}};
     for (const auto& [metric, file] : kinds) {
-      const std::string caption = std::string(metric) == "eval"
+      const std::string what = metric;
+      const std::string caption = what == "final" ? "final evaluation return, mean ± std over seeds"
+                                  : what == "eval"
                                       ? "evaluation return, mean ± std over seeds"
                                       : "training episode return, mean ± std over seeds";
-      if (!draw(summary, metric, directory / file, name + ": " + caption)) {
+      const fs::path out = directory / file;
+      fs::remove(out);  // a figure of an earlier summary is not left beside this one
+      const bool ok = what == "final" ? draw_final(summary, directory / "configurations.csv", out,
+                                                   name + ": " + caption)
+                                      : draw(summary, what, out, name + ": " + caption);
+      if (!ok) {
         std::fprintf(stderr, "warning: the figure %s could not be drawn (tendril plot failed)\n",
-                     (directory / file).c_str());
+                     out.c_str());
         failed = true;
-      } else if (fs::exists(directory / file)) {
+      } else if (fs::exists(out)) {
         drawn.emplace_back(file, caption);
       }
     }

@@ -53,7 +53,8 @@ for i in 0 1 2 3 4 5; do
   cmp -s "one/$run/model.policy" "mpi/$run/model.policy" || fail "$run: model.policy differs from one process's"
   [ ! -s "mpi/$run/run.lock" ] || fail "$run: run.lock still names a process"
 done
-[ -f mpi/summary/summary.md ] && [ -f mpi/summary/training.png ] && [ -f mpi/summary/evaluation.png ] ||
+[ -f mpi/summary/summary.md ] && [ -f mpi/summary/training.png ] && [ -f mpi/summary/evaluation.png ] &&
+  [ -f mpi/summary/final.png ] ||
   fail "no summary with figures: $(ls mpi/summary 2>&1)"
 [ "$(grep -c '^summary: ' mpi.log)" -eq 1 ] || fail "the summary was not written exactly once"
 "$T" sweep one.yaml --aggregate-only --no-figures >/dev/null || fail "aggregate-only failed"
