@@ -45,7 +45,7 @@ commands:
   sweep <sweep.yaml> --aggregate-only [--no-figures]
       Write <output>/summary/ from the runs as they are, without training.
   sweep <sweep.yaml> --slurm [--tasks K] [--max-running M] [--time T] [--cpus-per-task C]
-        [--mem M] [--partition P] [--account A] [--job-name N] [--out FILE]
+        [--mem M] [--partition P] [--account A] [--job-name N] [--stop-before S] [--out FILE]
       Write a Slurm job-array script (<output>/slurm/sweep.sbatch) whose tasks share the runs.
   collect-pneumatic <collect.yaml> [--set key=value ...] [--out FILE]
       Record the pneumatic arm's data set (seed 002: 10 min at 10 Hz under a dynamically

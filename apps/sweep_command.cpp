@@ -162,6 +162,8 @@ int write_slurm_script(const rl::Sweep& sweep, const CommandLine& line) {
   options.mem = line.value("mem", "");
   options.partition = line.value("partition", "");
   options.account = line.value("account", "");
+  options.stop_before =
+      static_cast<int>(line.integer("stop-before", options.stop_before, 0, 1 << 24));
   const std::string script = rl::slurm_script(sweep, options);
   const fs::path folder = fs::path(sweep.output) / "slurm";
   fs::create_directories(folder);  // the tasks' logs go here too
@@ -178,7 +180,7 @@ int sweep_command(const std::vector<std::string>& args) {
   const CommandLine line =
       CommandLine::parse(args,
                          {"only", "rank", "ranks", "tasks", "max-running", "cpus-per-task",
-                          "job-name", "time", "mem", "partition", "account", "out"},
+                          "job-name", "time", "mem", "partition", "account", "stop-before", "out"},
                          {"list", "quiet", "aggregate-only", "no-figures", "slurm"});
   require(line.positional.size() == 1 && line.overrides.empty(),
           "expects one sweep file (and no --set)", "command line");

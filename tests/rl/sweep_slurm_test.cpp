@@ -59,6 +59,9 @@ TEST_F(SlurmScripts, OneArrayTaskPerRunByDefault) {
   EXPECT_EQ(
       lines_starting(script, "#SBATCH --output="),
       std::vector<std::string>{"#SBATCH --output=/scratch/me/runs/sweeps/grid/slurm/%A_%a.out"});
+  // SIGTERM five minutes before the time limit, to tendril itself (exec): a clean checkpoint.
+  EXPECT_EQ(lines_starting(script, "#SBATCH --signal="),
+            std::vector<std::string>{"#SBATCH --signal=B:TERM@300"});
   EXPECT_TRUE(lines_starting(script, "#SBATCH --partition").empty());
   EXPECT_TRUE(lines_starting(script, "#SBATCH --mem").empty());
   EXPECT_EQ(lines_starting(script, "cd "), std::vector<std::string>{"cd '/scratch/me'"});
@@ -81,6 +84,7 @@ TEST_F(SlurmScripts, FewerTasksShareTheRunsAndResourcesAreOptions) {
   o.partition = "cpu";
   o.account = "lab";
   o.job_name = "batch";
+  o.stop_before = 0;
   const std::string script = slurm_script(sweep(), o);
   EXPECT_EQ(lines_starting(script, "#SBATCH --array="),
             std::vector<std::string>{"#SBATCH --array=0-3%2"});
@@ -93,6 +97,7 @@ TEST_F(SlurmScripts, FewerTasksShareTheRunsAndResourcesAreOptions) {
         "#SBATCH --partition=cpu", "#SBATCH --account=lab", "#SBATCH --job-name=batch"}) {
     EXPECT_EQ(lines_starting(script, line).size(), 1u) << line;
   }
+  EXPECT_TRUE(lines_starting(script, "#SBATCH --signal").empty());
   o.tasks = 50;  // more tasks than runs: one per run
   EXPECT_EQ(lines_starting(slurm_script(sweep(), o), "#SBATCH --array="),
             std::vector<std::string>{"#SBATCH --array=0-5%2"});

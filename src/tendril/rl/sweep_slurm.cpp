@@ -55,6 +55,11 @@ std::string slurm_script(const Sweep& sweep, const SlurmOptions& options) {
   s += "#SBATCH --ntasks=1\n";
   s += "#SBATCH --cpus-per-task=" + std::to_string(cpus) + "\n";
   s += "#SBATCH --time=" + line_value(options.time, "--time") + "\n";
+  require(options.stop_before >= 0, "must be 0 or more seconds", "--stop-before");
+  if (options.stop_before > 0) {
+    // B: to the batch shell, which `exec` below makes tendril itself.
+    s += "#SBATCH --signal=B:TERM@" + std::to_string(options.stop_before) + "\n";
+  }
   if (!options.mem.empty()) s += "#SBATCH --mem=" + line_value(options.mem, "--mem") + "\n";
   if (!options.partition.empty())
     s += "#SBATCH --partition=" + line_value(options.partition, "--partition") + "\n";

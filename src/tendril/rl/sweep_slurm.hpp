@@ -22,6 +22,10 @@ struct SlurmOptions {
   std::string job_name;   // "" : tendril-<output's last part>
   std::string time = "24:00:00";
   std::string mem, partition, account;  // left out when ""
+  // Slurm sends SIGTERM this many seconds before the time limit (--signal=B:TERM@N), so the run
+  // in training writes a checkpoint and the task ends cleanly; submitting again resumes it.
+  // 0: no early signal (Slurm's own SIGTERM comes KillWait, 30 s by default, before SIGKILL).
+  int stop_before = 300;
 };
 
 std::string slurm_script(const Sweep& sweep, const SlurmOptions& options);
