@@ -20,7 +20,9 @@ TEST(SweepShare, RanksCoverEveryRunExactlyOnce) {
           ASSERT_GE(share[k], 0);
           ASSERT_LT(share[k], runs);
           ++seen[share[k]];
-          if (k > 0) EXPECT_LT(share[k - 1], share[k]);
+          if (k > 0) {
+            EXPECT_LT(share[k - 1], share[k]);
+          }
         }
         smallest = std::min(smallest, share.size());
         largest = std::max(largest, share.size());
