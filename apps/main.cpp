@@ -36,9 +36,17 @@ commands:
       per step of the reward and of every info value; --out writes every transition
       (observation, action, reward, next observation, info and scene values) to a new CSV file;
       --set changes the run's experiment for this (e.g. env.params).
-  sweep <sweep.yaml> [--list] [--only I] [--quiet]
+  sweep <sweep.yaml> [--list] [--only I] [--rank R --ranks N] [--quiet] [--no-figures]
       Train the runs of a sweep file (a grid of overrides of one experiment) one after the
-      other into <output>/<run>; finished runs are kept, interrupted ones resumed.
+      other into <output>/<run>; finished runs are kept, interrupted ones resumed, runs another
+      process holds left to it. Under mpirun (or srun) each rank trains its share. When every
+      run has finished, writes <output>/summary/ (mean and spread over seeds: tables, curves,
+      figures).
+  sweep <sweep.yaml> --aggregate-only [--no-figures]
+      Write <output>/summary/ from the runs as they are, without training.
+  sweep <sweep.yaml> --slurm [--tasks K] [--max-running M] [--time T] [--cpus-per-task C]
+        [--mem M] [--partition P] [--account A] [--job-name N] [--stop-before S] [--out FILE]
+      Write a Slurm job-array script (<output>/slurm/sweep.sbatch) whose tasks share the runs.
   collect-pneumatic <collect.yaml> [--set key=value ...] [--out FILE]
       Record the pneumatic arm's data set (seed 002: 10 min at 10 Hz under a dynamically
       saturating pressure signal) from PneumaticArm/Robot-v0 into a CSV file.

@@ -1,63 +1,266 @@
-// `tendril sweep`: the runs of a sweep file, one after the other.
+// `tendril sweep`: the runs of a sweep file, in one process or shared among the ranks of an MPI
+// launch or the tasks of a Slurm job array, and the summary over seeds (docs/sweeps.md).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
-#include <cstring>
+#include <cstdlib>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
 #include "tendril/rl/sweep.hpp"
-#include "tendril/rl/trainer.hpp"
+#include "tendril/rl/sweep_runner.hpp"
+#include "tendril/rl/sweep_share.hpp"
+#include "tendril/rl/sweep_slurm.hpp"
+#include "tendril/rl/sweep_summary.hpp"
 
 namespace tendril::apps {
 
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path this_program() { return fs::read_symlink("/proc/self/exe"); }
+
+// Runs `tendril plot <args>` (a child process: matplotlib lives in Python); true on success.
+bool plot(const std::vector<std::string>& args) {
+  std::vector<std::string> words = {this_program().string(), "plot"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::fflush(stdout);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  int status = 0;
+  return child > 0 && ::waitpid(child, &status, 0) == child && WIFEXITED(status) &&
+         WEXITSTATUS(status) == 0;
+}
+
+// The figure of one metric ("rollout/ep_rew_mean" or "eval") over the runs that have data for
+// it, seeds grouped into mean ± std exactly as the summary groups them; false if drawing failed.
+bool draw(const rl::SweepSummary& summary, const std::string& metric, const fs::path& out,
+          const std::string& title) {
+  std::vector<std::string> args = {"curves"};
+  std::string labels;
+  for (const rl::ConfigurationSummary& c : summary.configurations) {
+    bool any = false;
+    for (const int i : c.runs) {
+      const rl::RunSummary& run = summary.runs[i];
+      if ((metric == "eval" ? run.eval : run.train).x.empty()) continue;
+      args.push_back(run.directory.string());
+      any = true;
+    }
+    if (!any) continue;
+    std::string label = c.name;
+    for (char& ch : label) ch = ch == ',' ? ';' : ch;
+    labels += (labels.empty() ? "" : ",") + label;
+  }
+  if (labels.empty()) return true;  // nothing logged yet: no figure
+  args.insert(args.end(),
+              {"--metric", metric, "--labels", labels, "--title", title, "--out", out.string()});
+  return plot(args);
+}
+
+// With one grid axis besides the seed, of numbers, and two configurations or more finished: the
+// final evaluation (mean ± std over seeds) against that axis, from configurations.csv. Returns
+// false if drawing failed, and leaves `out` absent when there is nothing to draw.
+bool draw_final(const rl::SweepSummary& summary, const fs::path& table, const fs::path& out,
+                const std::string& title) {
+  const auto& configurations = summary.configurations;
+  if (configurations.empty() || configurations.front().settings.size() != 1) return true;
+  double low = 0.0, high = 0.0;
+  int finished = 0;
+  for (const rl::ConfigurationSummary& c : configurations) {
+    const std::string& text = c.settings.front().second;
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != 0) return true;
+    low = finished == 0 ? value : std::min(low, value);
+    high = finished == 0 ? value : std::max(high, value);
+    finished += c.final_eval.count > 0;
+  }
+  if (finished < 2) return true;
+  const std::string key = configurations.front().settings.front().first;
+  std::vector<std::string> args = {"csv",      table.string(),
+                                   "--x",      key,
+                                   "--y",      "final_eval_mean",
+                                   "--yerr",   "final_eval_std",
+                                   "--kind",   "linepoints",
+                                   "--labels", "mean ± std over seeds",
+                                   "--title",  title,
+                                   "--xlabel", key,
+                                   "--ylabel", "final evaluation return",
+                                   "--out",    out.string()};
+  if (low > 0.0 && high >= 10.0 * low) args.push_back("--logx");
+  return plot(args);
+}
+
+// Writes the sweep's summary (summary/ in its output): tables, curves and figures.
+int aggregate(const rl::Sweep& sweep, bool figures) {
+  const rl::SweepSummary summary = rl::summarize_sweep(sweep);
+  const fs::path directory = fs::path(sweep.output) / "summary";
+  fs::create_directories(directory);
+  rl::write_sweep_summary(sweep, summary, directory, {});  // the tables the figures draw from
+  std::vector<std::pair<std::string, std::string>> drawn;
+  bool failed = false;
+  if (figures) {
+    std::string name = fs::absolute(sweep.output).lexically_normal().string();
+    while (name.size() > 1 && name.back() == '/') name.pop_back();
+    name = fs::path(name).filename().string();
+    const char* kinds[][2] = {{"rollout/ep_rew_mean", "training.png"},
+                              {"eval", "evaluation.png"},
+                              {"final", "final.png"}};
+    for (const auto& [metric, file] : kinds) {
+      const std::string what = metric;
+      const std::string caption = what == "final" ? "final evaluation return, mean ± std over seeds"
+                                  : what == "eval"
+                                      ? "evaluation return, mean ± std over seeds"
+                                      : "training episode return, mean ± std over seeds";
+      const fs::path out = directory / file;
+      fs::remove(out);  // a figure of an earlier summary is not left beside this one
+      const bool ok = what == "final" ? draw_final(summary, directory / "configurations.csv", out,
+                                                   name + ": " + caption)
+                                      : draw(summary, what, out, name + ": " + caption);
+      if (!ok) {
+        std::fprintf(stderr, "warning: the figure %s could not be drawn (tendril plot failed)\n",
+                     out.c_str());
+        failed = true;
+      } else if (fs::exists(out)) {
+        drawn.emplace_back(file, caption);
+      }
+    }
+  }
+  rl::write_sweep_summary(sweep, summary, directory, drawn);
+  std::printf("summary: %s (%zu configurations, %zu runs; wall time %.1f s)\n",
+              (directory / "summary.md").c_str(), summary.configurations.size(),
+              summary.runs.size(), summary.wall_seconds);
+  return failed ? 1 : 0;
+}
+
+int write_slurm_script(const rl::Sweep& sweep, const CommandLine& line) {
+  rl::SlurmOptions options;
+  options.tendril = this_program();
+  options.sweep_file = fs::absolute(line.positional.front()).lexically_normal();
+  options.working_directory = fs::current_path();
+  options.tasks = static_cast<int>(line.integer("tasks", 0, 1, 1 << 20));
+  options.max_running = static_cast<int>(line.integer("max-running", 0, 1, 1 << 20));
+  options.cpus_per_task = static_cast<int>(line.integer("cpus-per-task", 0, 1, 4096));
+  options.job_name = line.value("job-name", "");
+  options.time = line.value("time", options.time);
+  options.mem = line.value("mem", "");
+  options.partition = line.value("partition", "");
+  options.account = line.value("account", "");
+  options.stop_before =
+      static_cast<int>(line.integer("stop-before", options.stop_before, 0, 1 << 24));
+  const std::string script = rl::slurm_script(sweep, options);
+  const fs::path folder = fs::path(sweep.output) / "slurm";
+  fs::create_directories(folder);  // the tasks' logs go here too
+  const fs::path file = line.value("out", (folder / "sweep.sbatch").string());
+  write_file_atomically(file, script, "Slurm script");
+  fs::permissions(file, fs::perms::owner_exec | fs::perms::group_exec, fs::perm_options::add);
+  std::printf("%s\nsubmit with:  sbatch %s\n", file.c_str(), file.c_str());
+  return 0;
+}
+
+}  // namespace
+
 int sweep_command(const std::vector<std::string>& args) {
-  namespace fs = std::filesystem;
-  const CommandLine line = CommandLine::parse(args, {"only"}, {"list", "quiet"});
+  const CommandLine line =
+      CommandLine::parse(args,
+                         {"only", "rank", "ranks", "tasks", "max-running", "cpus-per-task",
+                          "job-name", "time", "mem", "partition", "account", "stop-before", "out"},
+                         {"list", "quiet", "aggregate-only", "no-figures", "slurm"});
   require(line.positional.size() == 1 && line.overrides.empty(),
           "expects one sweep file (and no --set)", "command line");
   const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
   const std::vector<rl::Sweep::Run> runs = sweep.runs();
-  const int only =
-      static_cast<int>(line.integer("only", -1, 0, static_cast<int64_t>(runs.size()) - 1));
+  const int count = static_cast<int>(runs.size());
+  if (line.has("slurm")) return write_slurm_script(sweep, line);
+  if (line.has("aggregate-only")) return aggregate(sweep, !line.has("no-figures"));
+
+  rl::SweepShare share = rl::SweepShare::from_environment();
+  require(line.has("rank") == line.has("ranks"), "are given together", "--rank/--ranks");
+  if (line.has("ranks")) {
+    share.ranks = static_cast<int>(line.integer("ranks", 1, 1, 1 << 20));
+    share.rank = static_cast<int>(line.integer("rank", 0, 0, share.ranks - 1));
+    share.source = "--rank/--ranks";
+  }
+  std::vector<int> indices = share.runs(count);
+  if (line.has("only")) {
+    require(share.ranks == 1, "cannot be combined with several ranks", "--only");
+    indices = {static_cast<int>(line.integer("only", 0, 0, count - 1))};
+  }
+  const std::string who = share.ranks > 1 ? "[rank " + std::to_string(share.rank) + "/" +
+                                                std::to_string(share.ranks) + "] "
+                                          : "";
+  if (line.has("list")) {
+    for (const int i : indices) {
+      std::printf("%3d  %s\n", i, sweep.directory(runs[i]).c_str());
+    }
+    return 0;
+  }
+
   rl::TrainOptions options;
   options.quiet = line.has("quiet");
-  // A sweep restarts runs interrupted before their first checkpoint (nothing of them is lost).
-  options.restart_unstarted = true;
   catch_interrupts();
-  for (int i = 0; i < static_cast<int>(runs.size()); ++i) {
-    if (only >= 0 && i != only) continue;
-    const fs::path directory = fs::path(sweep.output) / runs[i].name;
-    if (line.has("list")) {
-      std::printf("%3d  %s\n", i, directory.string().c_str());
-      continue;
+  const auto start = std::chrono::steady_clock::now();
+  rl::log_sweep_event(sweep, "start", share);
+  const auto report = [&](const rl::SweepRunRecord& record, bool done) {
+    if (!done) {
+      std::printf("%s[%d/%d] %s: %s\n", who.c_str(), record.index + 1, count,
+                  record.directory.c_str(), rl::to_string(record.status));
+    } else if (record.status == rl::SweepRunStatus::busy ||
+               record.status == rl::SweepRunStatus::finished_earlier) {
+      std::printf("%s[%d/%d] %s: %s\n", who.c_str(), record.index + 1, count,
+                  record.directory.c_str(), rl::to_string(record.status));
+    } else if (!record.result.interrupted) {
+      std::printf("%s  %lld steps in %.1f s (%.0f steps/s), final evaluation %.2f +/- %.2f\n",
+                  who.c_str(), static_cast<long long>(record.result.timesteps),
+                  record.result.seconds, record.result.steps_per_second,
+                  record.result.final_eval_mean, record.result.final_eval_std);
     }
-    // Finished runs are kept; interrupted ones continue from their newest checkpoint.
-    if (fs::exists(directory / "model.policy")) {
-      std::printf("[%d/%zu] %s: finished earlier, kept\n", i + 1, runs.size(), directory.c_str());
-      continue;
-    }
-    std::printf("[%d/%zu] %s\n", i + 1, runs.size(), directory.c_str());
     std::fflush(stdout);
-    const bool resumable = !rl::checkpoints(directory).empty();
-    const rl::TrainResult result =
-        resumable
-            ? rl::resume(directory, options)
-            : rl::train(rl::Experiment::from_config(sweep.experiment(runs[i])), directory, options);
-    if (result.interrupted) {
-      std::printf(
-          "  interrupted by %s after %lld steps; its checkpoint holds the run\n"
-          "continue with:  tendril sweep %s\n",
-          signal_name(result.interrupted), static_cast<long long>(result.timesteps),
-          line.positional.front().c_str());
-      return 128 + result.interrupted;
-    }
-    std::printf("  %lld steps in %.1f s, final evaluation %.2f +/- %.2f\n",
-                static_cast<long long>(result.timesteps), result.seconds, result.final_eval_mean,
-                result.final_eval_std);
+  };
+  const std::vector<rl::SweepRunRecord> records =
+      rl::train_sweep_runs(sweep, indices, options, report);
+  rl::log_sweep_event(sweep, "end", share);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!records.empty() && records.back().result.interrupted) {
+    const auto& last = records.back();
+    std::printf(
+        "%s  interrupted by %s after %lld steps; its checkpoint holds the run\n"
+        "continue with:  tendril sweep %s\n",
+        who.c_str(), signal_name(last.result.interrupted),
+        static_cast<long long>(last.result.timesteps), line.positional.front().c_str());
+    return 128 + last.result.interrupted;
   }
-  return 0;
+  std::printf("%s%zu runs of this process in %.1f s wall time\n", who.c_str(), indices.size(),
+              seconds);
+  if (!rl::sweep_finished(sweep)) {
+    std::printf(
+        "%sother runs are not finished yet: the process that finishes the last one writes the "
+        "summary (or: tendril sweep %s --aggregate-only)\n",
+        who.c_str(), line.positional.front().c_str());
+    return 0;
+  }
+  int status = 0;
+  const bool wrote =
+      rl::with_summary_lock(sweep, [&] { status = aggregate(sweep, !line.has("no-figures")); });
+  if (!wrote) std::printf("%sanother process is writing the summary\n", who.c_str());
+  return status;
 }
 
 }  // namespace tendril::apps

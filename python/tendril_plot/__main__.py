@@ -60,6 +60,8 @@ def main(argv):
     v.add_argument("--x", required=True, help="the column on the x axis")
     v.add_argument("--y", required=True, help="comma-separated columns on the y axis")
     v.add_argument("--kind", choices=["line", "linepoints", "scatter"], default="line")
+    v.add_argument("--yerr", help="comma-separated columns, one per --y column: each point's ± "
+                   "error, drawn as error bars (e.g. final_eval_std of a sweep's summary)")
     v.add_argument("--labels", help="comma-separated names, one per file and column")
     v.add_argument("--logx", action="store_true")
     v.add_argument("--logy", nargs="?", const="log", choices=["log", "symlog"])

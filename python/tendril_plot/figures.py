@@ -69,7 +69,9 @@ def curves(args):
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     groups = {}
     for run in runs:
-        key = seed_group(os.path.basename(os.path.normpath(run))) if args.group == "seeds" else run
+        path = os.path.normpath(run)
+        parent = os.path.basename(os.path.dirname(os.path.abspath(path)))
+        key = seed_group(os.path.basename(path), parent) if args.group == "seeds" else run
         groups.setdefault(key, []).append(run)
     if labels and len(labels) != len(groups):
         raise PlotError(f"--labels names {len(labels)} curves, there are {len(groups)}: "
@@ -248,17 +250,26 @@ def csv_columns(args):
     count = len(args.files) * len(ys)
     if labels and len(labels) != count:
         raise PlotError(f"--labels names {len(labels)} series, there are {count}")
+    errors = args.yerr.split(",") if args.yerr else [None] * len(ys)
+    if len(errors) != len(ys):
+        raise PlotError(f"--yerr names {len(errors)} columns, --y names {len(ys)}")
     k = 0
     for path in args.files:
         table = read_csv(path)
-        for column in [args.x] + ys:
+        for column in [args.x] + ys + [e for e in errors if e]:
             if column not in table:
                 raise PlotError(f"{path} has no column '{column}' (it has: {', '.join(table)})")
-        for y in ys:
+        for y, error in zip(ys, errors):
             label = labels[k] if labels else (y if len(args.files) == 1 else f"{os.path.basename(path)}: {y}")
             x_values, y_values = table[args.x], table[y]
             keep = np.isfinite(x_values) & np.isfinite(y_values)
-            if args.kind == "scatter":
+            if error:
+                order = np.argsort(x_values[keep], kind="stable")
+                spread = np.nan_to_num(table[error][keep][order])
+                axes.errorbar(x_values[keep][order], y_values[keep][order], yerr=spread, lw=1.5,
+                              marker="o", markersize=3, capsize=3, label=label,
+                              ls="none" if args.kind == "scatter" else "-")
+            elif args.kind == "scatter":
                 axes.scatter(x_values[keep], y_values[keep], s=12, label=label)
             else:
                 order = np.argsort(x_values[keep], kind="stable")

@@ -46,6 +46,19 @@ TEST_F(RunFaults, SecondLockIsRefusedNamingTheHolder) {
   EXPECT_NO_THROW(RunLock again(directory_));
 }
 
+// try_take passes over a held lock without waiting or raising, and takes a free or stale one.
+TEST_F(RunFaults, TryTakeGivesNothingWhileAnotherHolds) {
+  std::optional<RunLock> first = RunLock::try_take(directory_);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(read_text(directory_ / "run.lock"), std::to_string(::getpid()) + "\n");
+  EXPECT_FALSE(RunLock::try_take(directory_).has_value());
+  EXPECT_EQ(read_text(directory_ / "run.lock"), std::to_string(::getpid()) + "\n");
+  first.reset();
+  { std::ofstream(directory_ / "run.lock") << "999999\n"; }  // left by a killed process
+  EXPECT_TRUE(RunLock::try_take(directory_).has_value());
+  EXPECT_EQ(read_text(directory_ / "run.lock"), "");
+}
+
 // The lock of a process killed with SIGKILL goes with it; its PID file stays and is taken over.
 TEST_F(RunFaults, LockOfAKilledProcessIsStale) {
   int ready[2];

@@ -18,6 +18,7 @@ import numpy as np  # noqa: E402
 import matplotlib.image  # noqa: E402
 
 from tendril_plot.episode import EpisodeError, read_episode  # noqa: E402
+from tendril_plot.runs import seed_group  # noqa: E402
 
 RUN = os.path.join(RUNS, "sweep", "ppo_seed0")
 EPISODES = os.path.join(RUN, "episodes")
@@ -93,6 +94,18 @@ class FigureTest(unittest.TestCase):
         self.assert_picture(self.draw("csv.png", "csv", *files, "--x", "time/total_timesteps",
                                       "--y", "train/entropy_loss,train/value_loss",
                                       "--kind", "scatter", "--logy", "symlog"))
+        # A sweep summary's final evaluations with their spread as error bars.
+        table = os.path.join(OUT, "configurations.csv")
+        with open(table, "w") as f:
+            f.write("configuration,algo.n_steps,final_eval_mean,final_eval_std\n"
+                    "a,256,-10,4\nb,1024,5,2\nc,4096,8,1\n")
+        self.assert_picture(self.draw("final.png", "csv", table, "--x", "algo.n_steps", "--y",
+                                      "final_eval_mean", "--yerr", "final_eval_std",
+                                      "--kind", "linepoints", "--logx"))
+        result = plot("csv", table, "--x", "algo.n_steps", "--y", "final_eval_mean", "--yerr",
+                      "final_eval_std,x", "--out", os.path.join(OUT, "never_yerr.png"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--yerr names 2 columns", result.stderr)
 
     def test_bad_input_is_named_and_writes_nothing(self):
         out = os.path.join(OUT, "never.png")
@@ -107,6 +120,18 @@ class FigureTest(unittest.TestCase):
         self.assertEqual(result.returncode, 1)
         self.assertIn(".png, .svg or .pdf", result.stderr)
         self.assertFalse(os.path.exists(out))
+
+
+class SeedGroupTest(unittest.TestCase):
+    def test_the_rule_of_the_sweep_summary(self):
+        # The cases of tests/rl/sweep_summary_test.cpp (SeedGroup): both sides group alike.
+        cases = {("n_steps_256-seed_3", ""): "n_steps_256", ("ppo_case1_seed0", ""): "ppo_case1",
+                 ("seed_3-tau_0.01", ""): "tau_0.01",
+                 ("n_steps_64-seed_12-gamma_0.9", ""): "n_steps_64-gamma_0.9",
+                 ("PPO_Seed7", ""): "PPO", ("seed_42", "ur5_ppo_base"): "ur5_ppo_base",
+                 ("seed_42", ""): "seeds", ("tau_0.01", ""): "tau_0.01"}
+        for (name, parent), group in cases.items():
+            self.assertEqual(seed_group(name, parent), group, name)
 
 
 class EpisodeReaderTest(unittest.TestCase):

@@ -1,10 +1,12 @@
 // Curves of several runs on one axis: seeds grouped, their mean and spread on a common grid.
 
-// A run's name without its seed ("n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" →
-// "ppo_case1"): runs that differ only by seed share a group.
-export function seedGroup(name) {
-  const stripped = name.replace(/(^|[-_])seed_?\d+/i, '');
-  return stripped.length > 0 ? stripped : name;
+// A run's name without its seed token and the separators left at its ends ("n_steps_256-seed_3"
+// → "n_steps_256", "ppo_case1_seed0" → "ppo_case1", "seed_3-tau_0.01" → "tau_0.01", "seed_42" →
+// the name of the directory holding "seed_42"): runs that differ only by seed share a group, as in
+// `tendril sweep` and `tendril plot`.
+export function seedGroup(name, parent = '') {
+  const stripped = name.replace(/(^|[-_])seed_?\d+/i, '').replace(/^[-_]+|[-_]+$/g, '');
+  return stripped.length > 0 ? stripped : parent || 'seeds';
 }
 
 // The points of a curve with both coordinates finite, sorted by x.

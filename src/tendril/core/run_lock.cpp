@@ -27,7 +27,16 @@ std::string holder_of(int fd) {
 
 }  // namespace
 
-RunLock::RunLock(const std::filesystem::path& directory) : file_(directory / kFileName) {
+RunLock::RunLock(const std::filesystem::path& directory) { take(directory, true); }
+
+std::optional<RunLock> RunLock::try_take(const std::filesystem::path& directory) {
+  RunLock lock;
+  if (!lock.take(directory, false)) return std::nullopt;
+  return lock;
+}
+
+bool RunLock::take(const std::filesystem::path& directory, bool throw_if_held) {
+  file_ = directory / kFileName;
   const std::string where = directory.string();
   fd_ = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd_ < 0)
@@ -35,6 +44,11 @@ RunLock::RunLock(const std::filesystem::path& directory) : file_(directory / kFi
                 file_.string());
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     const int error = errno;
+    if (error == EWOULDBLOCK && !throw_if_held) {
+      ::close(fd_);
+      fd_ = -1;
+      return false;
+    }
     // The holder writes its PID right after locking: give it that moment.
     std::string holder = holder_of(fd_);
     for (int attempt = 0; holder.empty() && attempt < 50; ++attempt) {
@@ -66,6 +80,7 @@ RunLock::RunLock(const std::filesystem::path& directory) : file_(directory / kFi
     throw Error(std::string("cannot write the run's lock file: ") + std::strerror(error),
                 file_.string());
   }
+  return true;
 }
 
 RunLock::RunLock(RunLock&& other) noexcept : file_(std::move(other.file_)), fd_(other.fd_) {

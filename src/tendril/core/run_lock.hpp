@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 namespace tendril {
 
@@ -19,11 +20,19 @@ class RunLock {
   RunLock& operator=(const RunLock&) = delete;
   ~RunLock();
 
+  // The lock if no live process holds it (a stale one is taken over as by the constructor),
+  // nothing if one does: for callers that pass over a busy run instead of failing.
+  static std::optional<RunLock> try_take(const std::filesystem::path& directory);
+
   static constexpr const char* kFileName = "run.lock";
   const std::filesystem::path& file() const { return file_; }
 
  private:
   std::filesystem::path file_;
+  RunLock() = default;
+  // Takes the lock; false when a live process holds it and `throw_if_held` is not set.
+  bool take(const std::filesystem::path& directory, bool throw_if_held);
+
   int fd_ = -1;
 };
 

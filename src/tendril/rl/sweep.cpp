@@ -42,6 +42,10 @@ std::vector<Sweep::Run> Sweep::runs() const {
   return runs;
 }
 
+std::filesystem::path Sweep::directory(const Run& run) const {
+  return std::filesystem::path(output) / run.name;
+}
+
 Config Sweep::experiment(const Run& run) const {
   Config config = Config::load_file(experiment_file);
   for (const auto& [key, value] : run.overrides) config.set(key, value);

@@ -31,6 +31,8 @@ struct Sweep {
 
   static Sweep load(const std::filesystem::path& file);
   std::vector<Run> runs() const;
+  // <output>/<run name>
+  std::filesystem::path directory(const Run& run) const;
   // The experiment of run `run`, every key checked.
   Config experiment(const Run& run) const;
 };

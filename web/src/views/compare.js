@@ -60,7 +60,7 @@ export async function showCompare(container, query) {
     if (groupBox.checked) {
       const groups = new Map();
       for (const run of runs) {
-        const key = seedGroup(run.name);
+        const key = seedGroup(run.name, run.path.split('/').slice(-2, -1)[0]);
         if (!groups.has(key)) groups.set(key, []);
         groups.get(key).push(run);
       }

@@ -60,7 +60,7 @@ export async function showRuns(container) {
     }
     sweeps.replaceChildren(
       ...index.sweeps.map((sweep) => {
-        const groups = new Set(sweep.runs.map((p) => seedGroup(p.split('/').pop())));
+        const groups = new Set(sweep.runs.map((p) => seedGroup(p.split('/').pop(), p.split('/').slice(-2, -1)[0])));
         return h('div', { class: 'sweep' },
           h('strong', {}, sweep.path || sweep.name),
           ` — ${sweep.runs.length} runs in ${groups.size} group${groups.size === 1 ? '' : 's'} `,

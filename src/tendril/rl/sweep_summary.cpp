@@ -1,0 +1,391 @@
+#include "tendril/rl/sweep_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "tendril/core/atomic_file.hpp"
+#include "tendril/core/error.hpp"
+
+namespace tendril::rl {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The numeric columns of a CSV file by header name; empty when the file is missing. Cells
+// that are not numbers read as NaN; a last line without its newline (a file being written)
+// and rows with the wrong number of cells are left out, as tendril_plot's read_csv does.
+std::map<std::string, std::vector<double>> read_columns(const fs::path& file) {
+  std::map<std::string, std::vector<double>> columns;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return columns;
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.erase(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
+  std::istringstream lines(text);
+  std::string line;
+  std::vector<std::string> header;
+  const auto split = [](const std::string& row) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream stream(row);
+    while (std::getline(stream, cell, ',')) cells.push_back(cell);
+    if (!row.empty() && row.back() == ',') cells.emplace_back();
+    return cells;
+  };
+  if (!std::getline(lines, line)) return columns;
+  header = split(line);
+  for (const std::string& name : header) columns[name];
+  while (std::getline(lines, line)) {
+    const std::vector<std::string> cells = split(line);
+    if (cells.size() != header.size() || cells == header) continue;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      char* end = nullptr;
+      const double value = std::strtod(cells[i].c_str(), &end);
+      const bool whole = !cells[i].empty() && end != nullptr && *end == 0;
+      columns[header[i]].push_back(whole ? value : kNaN);
+    }
+  }
+  return columns;
+}
+
+const std::vector<double>& column(const std::map<std::string, std::vector<double>>& table,
+                                  const std::string& name) {
+  static const std::vector<double> none;
+  const auto found = table.find(name);
+  return found == table.end() ? none : found->second;
+}
+
+// The finite (x, y) pairs of two columns, sorted by x (stable).
+Curve curve_of(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<std::pair<double, double>> points;
+  for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
+    if (std::isfinite(x[i]) && std::isfinite(y[i])) points.emplace_back(x[i], y[i]);
+  }
+  std::stable_sort(points.begin(), points.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  Curve curve;
+  for (const auto& [a, b] : points) {
+    curve.x.push_back(a);
+    curve.y.push_back(b);
+  }
+  return curve;
+}
+
+// Linear interpolation of a curve at x inside its range (numpy.interp).
+double interpolate(const Curve& c, double x) {
+  const auto upper = std::upper_bound(c.x.begin(), c.x.end(), x);
+  if (upper == c.x.begin()) return c.y.front();
+  if (upper == c.x.end()) return c.y.back();
+  const std::size_t j = static_cast<std::size_t>(upper - c.x.begin());
+  const double x0 = c.x[j - 1], x1 = c.x[j];
+  return x1 == x0 ? c.y[j] : c.y[j - 1] + (c.y[j] - c.y[j - 1]) * (x - x0) / (x1 - x0);
+}
+
+// The last part of the sweep's output directory (what holds its runs).
+std::string sweep_name(const Sweep& sweep) {
+  fs::path path = fs::absolute(sweep.output).lexically_normal();
+  if (path.filename().empty()) path = path.parent_path();
+  return path.filename().string();
+}
+
+bool is_seed_key(const std::string& key) { return key.substr(key.rfind('.') + 1) == "seed"; }
+
+std::string number(double value, const char* format = "%.6g") {
+  if (!std::isfinite(value)) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+std::string curve_csv(const CurveStats& stats) {
+  std::string text = "steps,mean,std,min,max,seeds\n";
+  for (std::size_t i = 0; i < stats.x.size(); ++i) {
+    text += number(stats.x[i], "%.10g") + "," + number(stats.mean[i], "%.10g") + "," +
+            number(stats.std[i], "%.10g") + "," + number(stats.min[i], "%.10g") + "," +
+            number(stats.max[i], "%.10g") + "," + std::to_string(stats.curves) + "\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string seed_group(const std::string& run_name, const std::string& parent) {
+  static const std::regex seed_token("(^|[-_])seed_?[0-9]+", std::regex::icase);
+  std::string stripped =
+      std::regex_replace(run_name, seed_token, "", std::regex_constants::format_first_only);
+  const std::size_t first = stripped.find_first_not_of("-_");
+  if (first == std::string::npos) return parent.empty() ? "seeds" : parent;
+  stripped = stripped.substr(first, stripped.find_last_not_of("-_") - first + 1);
+  return stripped;
+}
+
+CurveStats aggregate_curves(const std::vector<Curve>& curves, int points) {
+  std::vector<const Curve*> present;
+  for (const Curve& c : curves) {
+    if (!c.x.empty()) present.push_back(&c);
+  }
+  CurveStats stats;
+  stats.curves = static_cast<int>(present.size());
+  if (present.empty()) return stats;
+  double start = -std::numeric_limits<double>::infinity();
+  double end = std::numeric_limits<double>::infinity();
+  for (const Curve* c : present) {
+    start = std::max(start, c->x.front());
+    end = std::min(end, c->x.back());
+  }
+  if (end < start) return stats;
+  const int count = end > start ? points : 1;
+  for (int i = 0; i < count; ++i) {
+    const double x = count == 1 ? start : start + (end - start) * i / (count - 1);
+    std::vector<double> values;
+    for (const Curve* c : present) values.push_back(interpolate(*c, x));
+    const Spread s = spread_of(values);
+    stats.x.push_back(x);
+    stats.mean.push_back(s.mean);
+    stats.std.push_back(s.std);
+    stats.min.push_back(s.min);
+    stats.max.push_back(s.max);
+  }
+  return stats;
+}
+
+Spread spread_of(const std::vector<double>& values) {
+  Spread s;
+  s.count = static_cast<int>(values.size());
+  if (values.empty()) {
+    s.mean = s.std = s.min = s.max = kNaN;
+    return s;
+  }
+  s.mean = std::accumulate(values.begin(), values.end(), 0.0) / s.count;
+  double squares = 0.0;
+  for (const double v : values) squares += (v - s.mean) * (v - s.mean);
+  s.std = std::sqrt(squares / s.count);
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  return s;
+}
+
+RunSummary summarize_run(const fs::path& directory) {
+  RunSummary run;
+  run.directory = directory;
+  run.name = directory.filename().string();
+  run.finished = fs::exists(directory / "model.policy");
+  const auto progress = read_columns(directory / "progress.csv");
+  const auto& steps = column(progress, "time/total_timesteps");
+  const auto& elapsed = column(progress, "time/time_elapsed");
+  const auto& fps = column(progress, "time/fps");
+  if (!steps.empty() && std::isfinite(steps.back())) run.steps = static_cast<int64_t>(steps.back());
+  // Each process's stretch ends where the clock restarts (a resume) or at the last row.
+  double stretch_steps = 0.0;
+  for (std::size_t i = 0; i < std::min(elapsed.size(), fps.size()); ++i) {
+    const bool last = i + 1 == elapsed.size() || elapsed[i + 1] < elapsed[i];
+    if (last && std::isfinite(elapsed[i]) && std::isfinite(fps[i])) {
+      run.seconds += elapsed[i];
+      stretch_steps += fps[i] * elapsed[i];
+    }
+  }
+  run.steps_per_second = run.seconds > 0.0 ? stretch_steps / run.seconds : kNaN;
+  run.train = curve_of(steps, column(progress, "rollout/ep_rew_mean"));
+  const auto evaluations = read_columns(directory / "eval.csv");
+  const auto& eval_steps = column(evaluations, "timesteps");
+  const auto& eval_mean = column(evaluations, "mean_return");
+  run.eval = curve_of(eval_steps, eval_mean);
+  if (!eval_mean.empty()) {
+    run.final_eval_mean = eval_mean.back();
+    run.final_eval_std =
+        column(evaluations, "std_return").empty() ? kNaN : column(evaluations, "std_return").back();
+    run.final_eval_steps = static_cast<int64_t>(eval_steps.back());
+  }
+  return run;
+}
+
+SweepSummary summarize_sweep(const Sweep& sweep) {
+  SweepSummary summary;
+  const std::vector<Sweep::Run> runs = sweep.runs();
+  std::map<std::string, std::size_t> index_of;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    summary.runs.push_back(summarize_run(sweep.directory(runs[i])));
+    const std::string group = seed_group(runs[i].name, sweep_name(sweep));
+    auto [at, inserted] = index_of.emplace(group, summary.configurations.size());
+    if (inserted) {
+      ConfigurationSummary configuration;
+      configuration.name = group;
+      for (const auto& [key, value] : runs[i].overrides) {
+        if (!is_seed_key(key)) configuration.settings.emplace_back(key, value);
+      }
+      summary.configurations.push_back(configuration);
+    }
+    summary.configurations[at->second].runs.push_back(static_cast<int>(i));
+  }
+  for (ConfigurationSummary& configuration : summary.configurations) {
+    std::vector<double> finals, speeds;
+    std::vector<Curve> train, eval;
+    for (const int i : configuration.runs) {
+      const RunSummary& run = summary.runs[i];
+      if (run.finished && run.final_eval_mean) finals.push_back(*run.final_eval_mean);
+      if (std::isfinite(run.steps_per_second)) speeds.push_back(run.steps_per_second);
+      train.push_back(run.train);
+      eval.push_back(run.eval);
+    }
+    configuration.final_eval = spread_of(finals);
+    configuration.steps_per_second = spread_of(speeds);
+    configuration.train = aggregate_curves(train);
+    configuration.eval = aggregate_curves(eval);
+  }
+  for (const RunSummary& run : summary.runs) summary.run_seconds += run.seconds;
+  const auto log = read_columns(fs::path(sweep.output) / "sweep_log.csv");
+  const auto& times = column(log, "unix_time");
+  summary.wall_seconds = kNaN;
+  if (!times.empty()) {
+    summary.wall_seconds = *std::max_element(times.begin(), times.end()) -
+                           *std::min_element(times.begin(), times.end());
+  }
+  std::ifstream in(fs::path(sweep.output) / "sweep_log.csv");
+  for (std::string line; std::getline(in, line);) summary.processes += line.rfind("start,", 0) == 0;
+  return summary;
+}
+
+namespace {
+
+// A file name for a configuration's curves: its name with characters other than letters,
+// digits, '.', '-', '_' and '=' replaced by '_'.
+std::string file_stem(const std::string& name) {
+  std::string stem = name;
+  for (char& c : stem) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_' &&
+        c != '=')
+      c = '_';
+  }
+  return stem;
+}
+
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string joined(std::initializer_list<std::string> parts, const std::string& separator) {
+  std::string text;
+  for (const std::string& part : parts) {
+    if (&part != parts.begin()) text.append(separator);
+    text.append(part);
+  }
+  return text;
+}
+
+std::string duration(double seconds) {
+  if (!std::isfinite(seconds)) return "unknown";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f s (%.2f h)", seconds, seconds / 3600.0);
+  return text;
+}
+
+}  // namespace
+
+void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary, const fs::path& directory,
+                         const std::vector<std::pair<std::string, std::string>>& figures) {
+  fs::create_directories(directory / "curves");
+  // Every configuration has the same setting keys (the grid's axes but the seed's).
+  std::vector<std::string> keys;
+  if (!summary.configurations.empty()) {
+    for (const auto& [key, value] : summary.configurations.front().settings) keys.push_back(key);
+  }
+  std::string configurations = "configuration";
+  for (const std::string& key : keys) configurations.append(",").append(csv_cell(key));
+  configurations +=
+      ",seeds,finished,final_eval_mean,final_eval_std,final_eval_min,final_eval_max,"
+      "steps_per_second_mean\n";
+  std::string table = "| configuration |";
+  for (const std::string& key : keys) table += " " + key + " |";
+  table +=
+      " finished / seeds | final evaluation, mean ± std over seeds | min | max |"
+      " steps/s |\n|---|";
+  for (std::size_t k = 0; k < keys.size(); ++k) table += "---|";
+  table += "---|---|---|---|---|\n";
+  for (const ConfigurationSummary& c : summary.configurations) {
+    configurations += csv_cell(c.name);
+    table += "| " + c.name + " |";
+    for (const auto& [key, value] : c.settings) {
+      configurations.append(",").append(csv_cell(value));
+      table += " " + value + " |";
+    }
+    const Spread& f = c.final_eval;
+    configurations +=
+        joined({"", std::to_string(c.runs.size()), std::to_string(f.count), number(f.mean, "%.10g"),
+                number(f.std, "%.10g"), number(f.min, "%.10g"), number(f.max, "%.10g"),
+                number(c.steps_per_second.mean, "%.10g")},
+               ",") +
+        "\n";
+    const std::string final_eval =
+        f.count ? number(f.mean, "%.2f") + " ± " + number(f.std, "%.2f") : "–";
+    table.append(" ")
+        .append(joined(
+            {std::to_string(f.count) + " / " + std::to_string(c.runs.size()), final_eval,
+             number(f.min, "%.2f"), number(f.max, "%.2f"), number(c.steps_per_second.mean, "%.0f")},
+            " | "))
+        .append(" |\n");
+    write_file_atomically(directory / "curves" / (file_stem(c.name) + ".train.csv"),
+                          curve_csv(c.train), "learning curve");
+    write_file_atomically(directory / "curves" / (file_stem(c.name) + ".eval.csv"),
+                          curve_csv(c.eval), "evaluation curve");
+  }
+  std::string runs_csv =
+      "run,configuration,finished,steps,seconds,steps_per_second,final_eval_steps,"
+      "final_eval_mean,final_eval_std\n";
+  std::string runs_table =
+      "| run | finished | steps | training time (s) | steps/s | final evaluation |\n"
+      "|---|---|---|---|---|---|\n";
+  for (const RunSummary& r : summary.runs) {
+    runs_csv += csv_cell(r.name) + "," + csv_cell(seed_group(r.name, sweep_name(sweep))) + "," +
+                (r.finished ? "1" : "0") + "," + std::to_string(r.steps) + "," +
+                number(r.seconds, "%.3f") + "," + number(r.steps_per_second, "%.2f") + "," +
+                (r.final_eval_mean ? std::to_string(r.final_eval_steps) : "") + "," +
+                number(r.final_eval_mean.value_or(kNaN), "%.10g") + "," +
+                number(r.final_eval_std.value_or(kNaN), "%.10g") + "\n";
+    runs_table += "| " + r.name + " | " + (r.finished ? "yes" : "no") + " | " +
+                  std::to_string(r.steps) + " | " + number(r.seconds, "%.1f") + " | " +
+                  number(r.steps_per_second, "%.0f") + " | " +
+                  (r.final_eval_mean ? number(*r.final_eval_mean, "%.2f") + " ± " +
+                                           number(r.final_eval_std.value_or(kNaN), "%.2f") +
+                                           " at " + std::to_string(r.final_eval_steps) + " steps"
+                                     : "–") +
+                  " |\n";
+  }
+  int finished = 0;
+  for (const RunSummary& r : summary.runs) finished += r.finished;
+  std::string page = "# Sweep " + sweep.output + "\n\n";
+  page += "Experiment `" + sweep.experiment_file.string() + "`; " +
+          std::to_string(summary.runs.size()) + " runs (" + std::to_string(finished) +
+          " finished) in " + std::to_string(summary.configurations.size()) +
+          " configurations (runs whose names differ only by their seed token).\n\n";
+  page += "- Wall time: " + duration(summary.wall_seconds) + ", from the first start to the " +
+          "last end of the " + std::to_string(summary.processes) +
+          " process(es) in sweep_log.csv (idle time between invocations included).\n";
+  page += "- Training time summed over runs: " + duration(summary.run_seconds) + ".\n\n";
+  page +=
+      "## Final evaluation\n\nThe last row of each finished run's eval.csv (its evaluation "
+      "at the end of training); mean, population standard deviation, minimum and maximum "
+      "over the seeds of each configuration; steps/s averaged over them.\n\n" +
+      table + "\n";
+  for (const auto& [file, caption] : figures) page += "![" + caption + "](" + file + ")\n\n";
+  page +=
+      "## Runs\n\nSteps/s: environment steps per second of training, from progress.csv "
+      "(over every process that trained the run).\n\n" +
+      runs_table;
+  write_file_atomically(directory / "configurations.csv", configurations, "sweep summary");
+  write_file_atomically(directory / "runs.csv", runs_csv, "sweep summary");
+  write_file_atomically(directory / "summary.md", page, "sweep summary");
+}
+
+}  // namespace tendril::rl

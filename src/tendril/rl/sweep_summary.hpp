@@ -1,0 +1,89 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tendril/rl/sweep.hpp"
+
+namespace tendril::rl {
+
+// A run's name without its seed token and the separators left at its ends, the group of runs
+// that differ only by seed: "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" →
+// "ppo_case1", "seed_3-tau_0.01" → "tau_0.01"; a name that is only a seed ("seed_42") gives
+// `parent`, the name of the directory holding the run, or "seeds". The same rule as `tendril
+// plot curves` (python/tendril_plot, runs.seed_group) and the dashboard, so a sweep's tables
+// and figures group runs alike.
+std::string seed_group(const std::string& run_name, const std::string& parent = "");
+
+// A curve of one run: y against environment steps, x ascending.
+struct Curve {
+  std::vector<double> x, y;
+};
+
+// Mean, population standard deviation, minimum and maximum over curves at `points` evenly
+// spaced x values over the range every curve covers (so each point averages all of them), by
+// linear interpolation: the statistics `tendril plot curves` draws. Empty curves are left out;
+// `x` is empty when none is left or their ranges do not overlap.
+struct CurveStats {
+  std::vector<double> x, mean, std, min, max;
+  int curves = 0;
+};
+CurveStats aggregate_curves(const std::vector<Curve>& curves, int points = 200);
+
+// Mean, population standard deviation, minimum and maximum of numbers.
+struct Spread {
+  double mean = 0.0, std = 0.0, min = 0.0, max = 0.0;
+  int count = 0;
+};
+Spread spread_of(const std::vector<double>& values);
+
+// What a run directory holds, read from progress.csv and eval.csv.
+struct RunSummary {
+  std::string name;
+  std::filesystem::path directory;
+  bool finished = false;  // model.policy is there
+  int64_t steps = 0;      // the last progress.csv row's time/total_timesteps
+  // Training time and speed over every process that trained it: progress.csv's clock restarts
+  // when a run resumes, so each stretch adds its last time/time_elapsed and fps × elapsed steps.
+  double seconds = 0.0;
+  double steps_per_second = 0.0;
+  // The last eval.csv row (a finished run's evaluation at its end).
+  std::optional<double> final_eval_mean, final_eval_std;
+  int64_t final_eval_steps = 0;
+  Curve train;  // rollout/ep_rew_mean against time/total_timesteps
+  Curve eval;   // eval.csv's mean_return against timesteps
+};
+RunSummary summarize_run(const std::filesystem::path& directory);
+
+// The runs of one configuration: the sweep's runs that differ only by seed.
+struct ConfigurationSummary {
+  std::string name;                                           // seed_group of its runs' names
+  std::vector<std::pair<std::string, std::string>> settings;  // its overrides but the seed
+  std::vector<int> runs;                                      // indices into SweepSummary::runs
+  Spread final_eval;  // over the finished runs' final evaluations (mean returns)
+  Spread steps_per_second;
+  CurveStats train, eval;
+};
+
+struct SweepSummary {
+  std::vector<RunSummary> runs;                      // in the sweep's order
+  std::vector<ConfigurationSummary> configurations;  // in order of first appearance
+  // From sweep_log.csv: the first process's start to the last one's end (NaN without a log),
+  // the processes that logged a start, and the training time summed over runs.
+  double wall_seconds = 0.0;
+  int processes = 0;
+  double run_seconds = 0.0;
+};
+SweepSummary summarize_sweep(const Sweep& sweep);
+
+// Writes <directory>/configurations.csv, runs.csv, curves/<configuration>.{train,eval}.csv and
+// summary.md (each atomically). `figures` are PNG files in `directory` the page links to.
+void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary,
+                         const std::filesystem::path& directory,
+                         const std::vector<std::pair<std::string, std::string>>& figures);
+
+}  // namespace tendril::rl

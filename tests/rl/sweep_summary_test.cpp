@@ -1,0 +1,193 @@
+#include "tendril/rl/sweep_summary.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/scratch_directory.hpp"
+#include "tendril/rl/sweep.hpp"
+
+namespace tendril::rl {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(SeedGroup, DropsTheSeedTokenAndTheSeparatorsItLeaves) {
+  EXPECT_EQ(seed_group("n_steps_256-seed_3"), "n_steps_256");
+  EXPECT_EQ(seed_group("ppo_case1_seed0"), "ppo_case1");
+  EXPECT_EQ(seed_group("seed_3-tau_0.01"), "tau_0.01");
+  EXPECT_EQ(seed_group("n_steps_64-seed_12-gamma_0.9"), "n_steps_64-gamma_0.9");
+  EXPECT_EQ(seed_group("PPO_Seed7"), "PPO");
+  EXPECT_EQ(seed_group("seed_42", "ur5_ppo_base"), "ur5_ppo_base");
+  EXPECT_EQ(seed_group("seed_42"), "seeds");
+  EXPECT_EQ(seed_group("tau_0.01"), "tau_0.01");  // no seed: a group of its own
+}
+
+TEST(SpreadOf, MeanPopulationStdMinMax) {
+  const Spread s = spread_of({1.0, 2.0, 3.0, 4.0});
+  EXPECT_DOUBLE_EQ(s.mean, 2.5);
+  EXPECT_DOUBLE_EQ(s.std, std::sqrt(1.25));  // (2.25 + 0.25 + 0.25 + 2.25) / 4
+  EXPECT_DOUBLE_EQ(s.min, 1.0);
+  EXPECT_DOUBLE_EQ(s.max, 4.0);
+  EXPECT_EQ(s.count, 4);
+  EXPECT_TRUE(std::isnan(spread_of({}).mean));
+}
+
+// Lines y = a x over different x ranges: on the common range every interpolated value is
+// exact, so the mean is mean(a) x and the std std(a) |x| at each grid point.
+TEST(AggregateCurves, MeanAndSpreadOnTheRangeEveryCurveCovers) {
+  const double slopes[] = {1.0, 2.0, 6.0};
+  const double starts[] = {0.0, 2.0, 1.0}, ends[] = {10.0, 12.0, 8.0};
+  std::vector<Curve> curves;
+  for (int k = 0; k < 3; ++k) {
+    Curve c;
+    for (double x = starts[k]; x <= ends[k] + 1e-9; x += 0.5 + k * 0.25) {
+      c.x.push_back(x);
+      c.y.push_back(slopes[k] * x);
+    }
+    c.x.push_back(ends[k]);  // the last point exactly at the end (a repeated x is harmless)
+    c.y.push_back(slopes[k] * ends[k]);
+    curves.push_back(c);
+  }
+  curves.push_back(Curve{});  // a run without data is left out
+  const CurveStats stats = aggregate_curves(curves, 13);
+  ASSERT_EQ(stats.x.size(), 13u);
+  EXPECT_EQ(stats.curves, 3);
+  EXPECT_DOUBLE_EQ(stats.x.front(), 2.0);
+  EXPECT_DOUBLE_EQ(stats.x.back(), 8.0);
+  const double std_slope = std::sqrt(((1 - 3.0) * (1 - 3.0) + 1 + 9) / 3.0);
+  for (std::size_t i = 0; i < stats.x.size(); ++i) {
+    const double x = stats.x[i];
+    EXPECT_NEAR(x, 2.0 + 0.5 * i, 1e-12);
+    EXPECT_NEAR(stats.mean[i], 3.0 * x, 1e-9);
+    EXPECT_NEAR(stats.std[i], std_slope * x, 1e-9);
+    EXPECT_NEAR(stats.min[i], 1.0 * x, 1e-9);
+    EXPECT_NEAR(stats.max[i], 6.0 * x, 1e-9);
+  }
+  // Ranges that do not overlap give no curve.
+  EXPECT_TRUE(aggregate_curves({Curve{{0, 1}, {0, 1}}, Curve{{2, 3}, {0, 1}}}).x.empty());
+}
+
+class SweepSummaries : public testing::ScratchDirectoryTest {
+ protected:
+  SweepSummaries() : ScratchDirectoryTest("sweep_summary") {}
+  // A run directory as the trainer leaves it: progress.csv, eval.csv, model.policy if finished.
+  void write_run(const std::string& name, const std::string& progress, const std::string& eval,
+                 bool finished) const {
+    const fs::path run = directory_ / "out" / name;
+    fs::create_directories(run);
+    std::ofstream(run / "progress.csv") << progress;
+    std::ofstream(run / "eval.csv") << "timesteps,mean_return,std_return,mean_length,episodes\n"
+                                    << eval;
+    if (finished) std::ofstream(run / "model.policy") << "policy";
+  }
+  Sweep sweep() const {
+    std::ofstream(directory_ / "base.yaml")
+        << "algorithm: ppo\nenv: {id: Pendulum-v1, n_envs: 2}\nalgo: {n_steps: 64}\n"
+           "n_timesteps: 1000\nseed: 0\n";
+    std::ofstream(directory_ / "sweep.yaml")
+        << "experiment: base.yaml\ngrid:\n  - {key: algo.n_steps, values: [64, 128]}\n"
+           "  - {key: seed, values: [0, 1, 2]}\noutput: "
+        << (directory_ / "out").string() << "\n";
+    return Sweep::load(directory_ / "sweep.yaml");
+  }
+};
+
+std::string read(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST_F(SweepSummaries, RunStepsPerSecondAddsTheStretchesOfEveryProcess) {
+  // A run trained 200 steps in 2 s (100 steps/s), then resumed for 450 steps in 1.5 s: the
+  // clock restarts at the resume. A last line without its newline is being written: ignored.
+  write_run("r",
+            "time/total_timesteps,time/fps,time/time_elapsed,rollout/ep_rew_mean\n"
+            "100,100,1,-5\n200,100,2,-4\n350,300,0.5,-3\n650,300,1.5,-1\n700,1,1",
+            "100,-9,1,10,2\n650,-2.5,0.5,10,2\n", true);
+  const RunSummary run = summarize_run(directory_ / "out" / "r");
+  EXPECT_TRUE(run.finished);
+  EXPECT_EQ(run.steps, 650);
+  EXPECT_DOUBLE_EQ(run.seconds, 3.5);
+  EXPECT_DOUBLE_EQ(run.steps_per_second, 650.0 / 3.5);
+  EXPECT_EQ(*run.final_eval_mean, -2.5);
+  EXPECT_EQ(*run.final_eval_std, 0.5);
+  EXPECT_EQ(run.final_eval_steps, 650);
+  EXPECT_EQ(run.train.x, (std::vector<double>{100, 200, 350, 650}));
+  EXPECT_EQ(run.train.y, (std::vector<double>{-5, -4, -3, -1}));
+}
+
+// Configurations of known final evaluations: n_steps 64 over seeds with 1, 2, 3 (mean 2, std
+// sqrt(2/3)); n_steps 128 with 10 and 20 finished and a third run unfinished (mean 15, std 5).
+TEST_F(SweepSummaries, ConfigurationsAreMeansAndSpreadsOverSeeds) {
+  const Sweep s = sweep();
+  const std::string header =
+      "time/total_timesteps,time/fps,time/time_elapsed,rollout/ep_rew_mean\n";
+  const double finals[] = {1, 2, 3, 10, 20, 99};
+  const auto runs = s.runs();
+  for (int i = 0; i < 6; ++i) {
+    // Training curves y = (i + 1) x over steps 0..1000 (the unfinished one reaches 500).
+    std::ostringstream progress;
+    progress << header;
+    const int last = i == 5 ? 500 : 1000;
+    for (int step = 0; step <= last; step += 100) {
+      progress << step << ",1000," << (step + 1) / 1000.0 << "," << (i + 1) * step << "\n";
+    }
+    std::ostringstream eval;
+    eval << "500,0,0,10,2\n" << last << "," << finals[i] << ",1,10,2\n";
+    write_run(runs[i].name, progress.str(), eval.str(), i != 5);
+  }
+  std::ofstream(directory_ / "out" / "sweep_log.csv")
+      << "event,unix_time,host,pid,rank,ranks\nstart,1000.5,a,1,0,2\nstart,1001,b,2,1,2\n"
+         "end,1100,b,2,1,2\nend,1130.5,a,1,0,2\n";
+
+  const SweepSummary summary = summarize_sweep(s);
+  ASSERT_EQ(summary.configurations.size(), 2u);
+  const ConfigurationSummary& a = summary.configurations[0];
+  const ConfigurationSummary& b = summary.configurations[1];
+  EXPECT_EQ(a.name, "n_steps_64");
+  EXPECT_EQ(a.settings, (std::vector<std::pair<std::string, std::string>>{{"algo.n_steps", "64"}}));
+  EXPECT_EQ(a.runs, (std::vector<int>{0, 1, 2}));
+  EXPECT_DOUBLE_EQ(a.final_eval.mean, 2.0);
+  EXPECT_DOUBLE_EQ(a.final_eval.std, std::sqrt(2.0 / 3.0));
+  EXPECT_EQ(b.name, "n_steps_128");
+  EXPECT_EQ(b.final_eval.count, 2);
+  EXPECT_DOUBLE_EQ(b.final_eval.mean, 15.0);
+  EXPECT_DOUBLE_EQ(b.final_eval.std, 5.0);
+  // Learning curves: slopes 1, 2, 3 → mean 2x, std sqrt(2/3) x over 0..1000; slopes 4, 5, 6
+  // cut to 0..500, where the unfinished run ends.
+  EXPECT_DOUBLE_EQ(a.train.x.back(), 1000.0);
+  EXPECT_NEAR(a.train.mean.back(), 2000.0, 1e-9);
+  EXPECT_NEAR(a.train.std.back(), 1000.0 * std::sqrt(2.0 / 3.0), 1e-9);
+  EXPECT_DOUBLE_EQ(b.train.x.back(), 500.0);
+  EXPECT_NEAR(b.train.mean.back(), 2500.0, 1e-9);
+  EXPECT_EQ(b.train.curves, 3);
+  EXPECT_DOUBLE_EQ(summary.wall_seconds, 130.0);
+  EXPECT_EQ(summary.processes, 2);
+
+  write_sweep_summary(s, summary, directory_ / "out" / "summary", {{"training.png", "curves"}});
+  const std::string table = read(directory_ / "out" / "summary" / "configurations.csv");
+  EXPECT_NE(table.find("configuration,algo.n_steps,seeds,finished,final_eval_mean,"),
+            std::string::npos);
+  EXPECT_NE(table.find("n_steps_64,64,3,3,2,0.8164965809,1,3,"), std::string::npos) << table;
+  EXPECT_NE(table.find("n_steps_128,128,3,2,15,5,10,20,"), std::string::npos) << table;
+  const std::string page = read(directory_ / "out" / "summary" / "summary.md");
+  EXPECT_NE(page.find("| n_steps_64 | 64 | 3 / 3 | 2.00 ± 0.82 | 1.00 | 3.00 |"), std::string::npos)
+      << page;
+  EXPECT_NE(page.find("| n_steps_128 | 128 | 2 / 3 | 15.00 ± 5.00 | 10.00 | 20.00 |"),
+            std::string::npos);
+  EXPECT_NE(page.find("Wall time: 130.0 s"), std::string::npos);
+  EXPECT_NE(page.find("![curves](training.png)"), std::string::npos);
+  const std::string curve =
+      read(directory_ / "out" / "summary" / "curves" / "n_steps_64.train.csv");
+  EXPECT_EQ(curve.substr(0, curve.find('\n')), "steps,mean,std,min,max,seeds");
+  EXPECT_NE(curve.find("\n1000,2000,816.496580"), std::string::npos) << curve.substr(0, 300);
+}
+
+}  // namespace
+}  // namespace tendril::rl
