@@ -55,23 +55,41 @@ def main(argv):
     common(e, (10.0, 5.6))
 
     v = kinds.add_parser("csv", help="columns of CSV files",
-                         description="Any columns of one or more CSV files against one column.")
+                         description="Any columns of one or more CSV files against one column "
+                         "(lines starting with '#' are skipped), split into series and panels "
+                         "by the values of other columns.")
     v.add_argument("files", nargs="+")
-    v.add_argument("--x", required=True, help="the column on the x axis")
+    v.add_argument("--x", required=True, help="the column on the x axis, or one per --y column "
+                   "(paths: --x theta_x,goal_x --y theta_y,goal_y)")
     v.add_argument("--y", required=True, help="comma-separated columns on the y axis")
-    v.add_argument("--kind", choices=["line", "linepoints", "scatter"], default="line")
+    v.add_argument("--kind", choices=["line", "linepoints", "scatter", "path", "box"], default="line",
+                   help="line: sorted by x; path: in the rows' order (a trajectory in the plane); "
+                   "box: box plots of y at each distinct value of x")
     v.add_argument("--yerr", help="comma-separated columns, one per --y column: each point's ± "
                    "error, drawn as error bars (e.g. final_eval_std of a sweep's summary)")
     v.add_argument("--labels", help="comma-separated names, one per file and column")
+    v.add_argument("--where", action="append", metavar="COLUMN=VALUE",
+                   help="keep only the rows whose COLUMN is (=) or is not (!=) VALUE; repeatable")
+    v.add_argument("--split", metavar="COLUMN", help="one series per distinct value of COLUMN")
+    v.add_argument("--panels", metavar="COLUMN",
+                   help="one panel per distinct value of COLUMN, or 'y': one per --y column")
+    v.add_argument("--columns", type=int, help="panels per row (default: up to 3)")
+    v.add_argument("--colormap", help="colour the --split series along this matplotlib colormap, "
+                   "with a colour bar (e.g. viridis for a sweep of PWM values)")
+    v.add_argument("--bold", metavar="COLUMNS", help="comma-separated 0/1 columns: series with a 1 "
+                   "in one of them are drawn thick, in their own colour, and named in the legend")
+    v.add_argument("--styles", help="comma-separated line styles, one per --y column: solid, dashed, dotted, dashdot")
+    v.add_argument("--equal", action="store_true", help="equal scales on x and y (paths, planes)")
+    v.add_argument("--marker-size", type=float, default=12, help="scatter dots' area, points²")
     v.add_argument("--logx", action="store_true")
     v.add_argument("--logy", nargs="?", const="log", choices=["log", "symlog"])
     common(v, (6.4, 4.0))
 
     args = parser.parse_args(argv)
-    from . import figures  # matplotlib loads only when a figure is drawn
+    from . import figures, tables  # matplotlib loads only when a figure is drawn
 
     try:
-        {"curves": figures.curves, "episode": figures.episode, "csv": figures.csv_columns}[args.figure](args)
+        {"curves": figures.curves, "episode": figures.episode, "csv": tables.csv_columns}[args.figure](args)
     except (PlotError, EpisodeError) as error:
         print(f"tendril plot: error: {error}", file=sys.stderr)
         return 1

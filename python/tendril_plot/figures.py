@@ -1,4 +1,4 @@
-"""The figures of `tendril plot`: learning curves, episode snapshots, CSV columns."""
+"""The figures of `tendril plot`: learning curves and episode snapshots (CSV columns: tables.py)."""
 import os
 
 import matplotlib
@@ -9,7 +9,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from .episode import read_episode  # noqa: E402
-from .runs import PlotError, aggregate, curve, expand_runs, read_csv, seed_group  # noqa: E402
+from .runs import PlotError, aggregate, curve, expand_runs, seed_group  # noqa: E402
 
 METRIC_LABELS = {
     "rollout/ep_rew_mean": "mean training episode return (last 100)",
@@ -241,39 +241,3 @@ def _equal_axes(axes, ep, order):
     for setter, c in zip((axes.set_xlim, axes.set_ylim, axes.set_zlim), centre):
         setter(c - half, c + half)
     axes.set_box_aspect((1, 1, 1))
-
-
-def csv_columns(args):
-    figure, axes = new_figure(args.size)
-    ys = args.y.split(",")
-    labels = args.labels.split(",") if args.labels else None
-    count = len(args.files) * len(ys)
-    if labels and len(labels) != count:
-        raise PlotError(f"--labels names {len(labels)} series, there are {count}")
-    errors = args.yerr.split(",") if args.yerr else [None] * len(ys)
-    if len(errors) != len(ys):
-        raise PlotError(f"--yerr names {len(errors)} columns, --y names {len(ys)}")
-    k = 0
-    for path in args.files:
-        table = read_csv(path)
-        for column in [args.x] + ys + [e for e in errors if e]:
-            if column not in table:
-                raise PlotError(f"{path} has no column '{column}' (it has: {', '.join(table)})")
-        for y, error in zip(ys, errors):
-            label = labels[k] if labels else (y if len(args.files) == 1 else f"{os.path.basename(path)}: {y}")
-            x_values, y_values = table[args.x], table[y]
-            keep = np.isfinite(x_values) & np.isfinite(y_values)
-            if error:
-                order = np.argsort(x_values[keep], kind="stable")
-                spread = np.nan_to_num(table[error][keep][order])
-                axes.errorbar(x_values[keep][order], y_values[keep][order], yerr=spread, lw=1.5,
-                              marker="o", markersize=3, capsize=3, label=label,
-                              ls="none" if args.kind == "scatter" else "-")
-            elif args.kind == "scatter":
-                axes.scatter(x_values[keep], y_values[keep], s=12, label=label)
-            else:
-                order = np.argsort(x_values[keep], kind="stable")
-                axes.plot(x_values[keep][order], y_values[keep][order], lw=1.5, label=label,
-                          marker="o" if args.kind == "linepoints" else None, markersize=3)
-            k += 1
-    finish(figure, axes, args, args.x, ys[0] if len(ys) == 1 else "")

@@ -13,19 +13,20 @@ class PlotError(ValueError):
     pass
 
 
-def read_csv(path):
-    """Columns of a numeric CSV file as float arrays (empty or non-numeric cells: NaN). A last
-    line without its newline (a file being written) and rows with the wrong number of cells are
-    left out."""
+def read_csv(path, with_text=False):
+    """Columns of a numeric CSV file as float arrays (empty or non-numeric cells: NaN); with
+    `with_text`, also the cells as text (string arrays), for columns of names. Lines starting
+    with '#' (the commented headers of tendril's data files) are skipped. A last line without
+    its newline (a file being written) and rows with the wrong number of cells are left out."""
     try:
         with open(path, newline="") as f:
             text = f.read()
     except OSError as e:
         raise PlotError(f"{path}: {e.strerror}")
-    lines = text.split("\n")
-    if len(lines) < 2:
+    lines = text.split("\n")[:-1]  # the part after the last newline is unfinished
+    complete = [line for line in lines if not line.startswith("#")]
+    if not complete:
         raise PlotError(f"{path}: no complete header line")
-    complete = lines[:-1]  # the part after the last newline is unfinished
     reader = csv.reader(complete)
     header = [h.strip() for h in next(reader)]
     rows = [row for row in reader if len(row) == len(header)]
@@ -37,7 +38,11 @@ def read_csv(path):
             return math.nan
 
     values = np.array([[number(c) for c in row] for row in rows], dtype=float).reshape(-1, len(header))
-    return {name: values[:, i] for i, name in enumerate(header)}
+    table = {name: values[:, i] for i, name in enumerate(header)}
+    if not with_text:
+        return table
+    cells = np.array(rows, dtype=str).reshape(-1, len(header))
+    return table, {name: np.char.strip(cells[:, i]) for i, name in enumerate(header)}
 
 
 def is_run(directory):

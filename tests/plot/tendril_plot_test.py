@@ -18,7 +18,8 @@ import numpy as np  # noqa: E402
 import matplotlib.image  # noqa: E402
 
 from tendril_plot.episode import EpisodeError, read_episode  # noqa: E402
-from tendril_plot.runs import seed_group  # noqa: E402
+from tendril_plot.runs import read_csv, seed_group  # noqa: E402
+from tendril_plot.tables import distinct  # noqa: E402
 
 RUN = os.path.join(RUNS, "sweep", "ppo_seed0")
 EPISODES = os.path.join(RUN, "episodes")
@@ -106,6 +107,48 @@ class FigureTest(unittest.TestCase):
                       "final_eval_std,x", "--out", os.path.join(OUT, "never_yerr.png"))
         self.assertEqual(result.returncode, 1)
         self.assertIn("--yerr names 2 columns", result.stderr)
+
+    def test_data_files_split_into_series_panels_paths_and_boxes(self):
+        # A data file as tendril's collectors write them: a commented header, a column of names.
+        table = os.path.join(OUT, "holds.csv")
+        with open(table, "w") as f:
+            f.write("# format: example v1\n# column coil: the coil held on\n"
+                    "coil,pwm,time_s,angle_deg,lower,upper,goal_x,goal_y\n")
+            for coil in ("pos_x", "neg_x"):
+                for pwm in (10, 20, 30):
+                    for t in range(20):
+                        angle = (pwm - 10) * t / 4.0
+                        f.write(f"{coil},{pwm},{t * 0.1:.1f},{angle},{int(pwm == 20)},"
+                                f"{int(pwm == 30)},{t % 5},{-angle}\n")
+        numbers, text = read_csv(table, with_text=True)
+        self.assertEqual(len(numbers["pwm"]), 120)
+        self.assertEqual(list(text["coil"][[0, 60]]), ["pos_x", "neg_x"])
+        self.assertTrue(np.isnan(numbers["coil"]).all())
+        self.assertEqual(numbers["angle_deg"][59], 20 * 19 / 4.0)
+        self.assertEqual(distinct(np.array(["10", "9", "10", "30"])), ["9", "10", "30"])
+        self.assertEqual(distinct(np.array(["S1", "S0", "S1"])), ["S1", "S0"])
+        self.assert_picture(self.draw("split.png", "csv", table, "--x", "time_s", "--y",
+                                      "angle_deg", "--split", "pwm", "--panels", "coil",
+                                      "--colormap", "viridis", "--bold", "lower,upper"))
+        self.assert_picture(self.draw("paths.png", "csv", table, "--x", "time_s,goal_x", "--y",
+                                      "angle_deg,goal_y", "--styles", "solid,dashed", "--kind", "path",
+                                      "--where", "pwm=30", "--panels", "coil", "--equal"))
+        self.assert_picture(self.draw("panels_y.png", "csv", table, "--x", "time_s", "--y",
+                                      "angle_deg,goal_y", "--panels", "y", "--split", "coil",
+                                      "--where", "pwm!=10"))
+        self.assert_picture(self.draw("boxes.png", "csv", table, "--x", "coil", "--y",
+                                      "angle_deg", "--kind", "box", "--split", "pwm"))
+        for bad, message in ((["--where", "pwm"], "expected COLUMN=VALUE"),
+                             (["--where", "nope=1"], "has no column 'nope'"),
+                             (["--where", "pwm=99"], "no rows left"),
+                             (["--split", "nope"], "has no column 'nope'"),
+                             (["--x", "time_s,goal_x,pwm"], "--x names 3 columns")):
+            out = os.path.join(OUT, "never_table.png")
+            words = ["csv", table, "--x", "time_s", "--y", "angle_deg", "--panels", "coil", *bad]
+            result = plot(*words, "--out", out)
+            self.assertEqual(result.returncode, 1, bad)
+            self.assertIn(message, result.stderr)
+            self.assertFalse(os.path.exists(out))
 
     def test_bad_input_is_named_and_writes_nothing(self):
         out = os.path.join(OUT, "never.png")
