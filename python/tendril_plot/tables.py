@@ -5,6 +5,7 @@ import os
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.ticker import MaxNLocator
 
 from .runs import PlotError, read_csv
 
@@ -106,7 +107,7 @@ def csv_columns(args):
         shades = plt.get_cmap(args.colormap)(np.linspace(0.1, 0.9, len(splits)))
 
     def colour_of(i):
-        return shades[i] if shades is not None else colours[i % len(colours)]
+        return shades[i % len(shades)] if shades is not None else colours[i % len(colours)]
 
     for p, (axes, (panel, only_y)) in enumerate(zip(grid.flat, panels)):
         axes.grid(True, color="#dddddd", linewidth=0.6)
@@ -119,7 +120,8 @@ def csv_columns(args):
             if panel is not None and only_y is None:
                 in_panel &= text[args.panels] == panel
             for j, (x, y, error, style) in enumerate(zip(xs, ys, errors, styles)):
-                name = labels[k] if labels else (y if len(args.files) == 1 else f"{os.path.basename(path)}: {y}")
+                name = labels[k] if labels else (
+                    y if len(args.files) == 1 else f"{os.path.basename(path)}: {y}")
                 k += 1
                 if only_y is not None and j != only_y:
                     continue
@@ -127,13 +129,12 @@ def csv_columns(args):
                     rows_of = in_panel if value is None else in_panel & (text[args.split] == value)
                     if not rows_of.any():
                         continue
+                    alone = len(ys) * len(args.files) == 1 or only_y is not None
                     series = name if value is None else (
-                        _split_name(args.split, value) if len(ys) * len(args.files) == 1 or only_y is not None
+                        _split_name(args.split, value) if alone
                         else f"{name}, {_split_name(args.split, value)}")
-                    # One colour per split value; without a split, per y column.
-                    colour = colour_of(s if value is not None else k - 1)
-                    if args.split and len(ys) > 1 and not args.styles and only_y is None:
-                        colour = colour_of(s * len(ys) + j)
+                    # One colour per file, y column and split value, the same in every panel.
+                    colour = colour_of((k - 1) * len(splits) + s if only_y is None else s)
                     if args.kind == "box":
                         box_series.append((series if value is not None or len(ys) > 1 else None,
                                            colour, text[x][rows_of], table[y][rows_of]))
@@ -164,9 +165,14 @@ def csv_columns(args):
         handles, names = axes.get_legend_handles_labels()
         first = grid.flat[0].get_legend_handles_labels()[1]
         if handles and (p == 0 or names != first):
-            axes.legend(frameon=False, fontsize="small", markerscale=3 if args.kind == "scatter" else 1)
+            scale = max(1.0, 6 / math.sqrt(args.marker_size)) if args.kind == "scatter" else 1
+            axes.legend(frameon=False, fontsize="small", markerscale=scale)
+    whole = all(np.all(np.mod(t[x][k & np.isfinite(t[x])], 1) == 0)
+                for _, t, _, k in tables for x in xs)
     for axes in grid[-1, :]:
         axes.set_xlabel(args.xlabel or xs[0])
+        if whole and args.kind != "box" and not args.logx:  # seeds, modules: whole ticks
+            axes.xaxis.set_major_locator(MaxNLocator(integer=True))
     for axes in grid[:, 0]:
         axes.set_ylabel(args.ylabel or (ys[0] if len(ys) == 1 else ""))
     if shades is not None:
@@ -227,6 +233,6 @@ def _boxes(axes, series):
                      whiskerprops={"color": colour}, capprops={"color": colour},
                      flierprops={"markeredgecolor": colour, "markersize": 3})
         if name:
-            axes.bar([], [], color=colour, alpha=0.55, label=name)  # the legend's swatch
+            axes.fill_between([], [], color=colour, alpha=0.55, label=name)  # the legend swatch
     axes.set_xticks(range(len(categories)), categories)
     axes.set_xlim(-0.6, len(categories) - 0.4)
