@@ -74,6 +74,7 @@ def main(argv):
     v.add_argument("--panels", metavar="COLUMN",
                    help="one panel per distinct value of COLUMN, or 'y': one per --y column")
     v.add_argument("--columns", type=int, help="panels per row (default: up to 3)")
+    v.add_argument("--titles", help="comma-separated titles of the panels, in order")
     v.add_argument("--colormap", help="colour the --split series along this matplotlib colormap, "
                    "with a colour bar (e.g. viridis for a sweep of PWM values)")
     v.add_argument("--bold", metavar="COLUMNS", help="comma-separated 0/1 columns: series with a 1 "

@@ -93,6 +93,9 @@ def csv_columns(args):
         panels = [(None, None)]
     if not panels:
         raise PlotError("no rows left to draw (see --where)")
+    titles = args.titles.split(",") if args.titles else None
+    if titles and len(titles) != len(panels):
+        raise PlotError(f"--titles names {len(titles)} panels, there are {len(panels)}")
     rows, columns = _layout(len(panels), args.columns)
     figure, grid = plt.subplots(rows, columns, figsize=args.size, squeeze=False, sharex=not args.equal,
                                 sharey=not args.equal, constrained_layout=True)
@@ -115,7 +118,7 @@ def csv_columns(args):
         k = 0
         box_series = []
         bold_count = 0
-        for path, table, text, keep in tables:
+        for f, (path, table, text, keep) in enumerate(tables):
             in_panel = keep.copy()
             if panel is not None and only_y is None:
                 in_panel &= text[args.panels] == panel
@@ -129,12 +132,12 @@ def csv_columns(args):
                     rows_of = in_panel if value is None else in_panel & (text[args.split] == value)
                     if not rows_of.any():
                         continue
-                    alone = len(ys) * len(args.files) == 1 or only_y is not None
+                    alone = len(args.files) == 1 and (len(ys) == 1 or only_y is not None)
                     series = name if value is None else (
                         _split_name(args.split, value) if alone
                         else f"{name}, {_split_name(args.split, value)}")
                     # One colour per file, y column and split value, the same in every panel.
-                    colour = colour_of((k - 1) * len(splits) + s if only_y is None else s)
+                    colour = colour_of(((k - 1) if only_y is None else f) * len(splits) + s)
                     if args.kind == "box":
                         box_series.append((series if value is not None or len(ys) > 1 else None,
                                            colour, text[x][rows_of], table[y][rows_of]))
@@ -153,9 +156,13 @@ def csv_columns(args):
         if args.kind == "box":
             _boxes(axes, box_series)
         if panel is not None:
-            axes.set_title(ys[only_y] if only_y is not None and not labels
-                           else labels[only_y] if only_y is not None
-                           else _split_name(args.panels, panel), fontsize="medium")
+            if titles:
+                title = titles[p]
+            elif only_y is None:
+                title = _split_name(args.panels, panel)
+            else:  # one file's labels name its columns; several files' name the series
+                title = labels[only_y] if labels and len(args.files) == 1 else ys[only_y]
+            axes.set_title(title, fontsize="medium")
         if args.equal:
             axes.set_aspect("equal", adjustable="datalim")
         if args.logx:

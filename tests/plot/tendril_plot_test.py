@@ -136,13 +136,20 @@ class FigureTest(unittest.TestCase):
         self.assert_picture(self.draw("panels_y.png", "csv", table, "--x", "time_s", "--y",
                                       "angle_deg,goal_y", "--panels", "y", "--split", "coil",
                                       "--where", "pwm!=10"))
+        # Several files in panels by column: each file's series in its own colour, named.
+        second = os.path.join(OUT, "holds_copy.csv")
+        shutil.copy(table, second)
+        self.assert_picture(self.draw("files_panels_y.png", "csv", table, second, "--x", "time_s",
+                                      "--y", "angle_deg,goal_y", "--panels", "y",
+                                      "--labels", "a,a,b,b", "--titles", "angle,goal"))
         self.assert_picture(self.draw("boxes.png", "csv", table, "--x", "coil", "--y",
                                       "angle_deg", "--kind", "box", "--split", "pwm"))
         for bad, message in ((["--where", "pwm"], "expected COLUMN=VALUE"),
                              (["--where", "nope=1"], "has no column 'nope'"),
                              (["--where", "pwm=99"], "no rows left"),
                              (["--split", "nope"], "has no column 'nope'"),
-                             (["--x", "time_s,goal_x,pwm"], "--x names 3 columns")):
+                             (["--x", "time_s,goal_x,pwm"], "--x names 3 columns"),
+                             (["--titles", "one"], "--titles names 1 panels, there are 2")):
             out = os.path.join(OUT, "never_table.png")
             words = ["csv", table, "--x", "time_s", "--y", "angle_deg", "--panels", "coil", *bad]
             result = plot(*words, "--out", out)
