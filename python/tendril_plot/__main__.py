@@ -60,6 +60,11 @@ def main(argv):
     v.add_argument("--x", required=True, help="the column on the x axis")
     v.add_argument("--y", required=True, help="comma-separated columns on the y axis")
     v.add_argument("--kind", choices=["line", "linepoints", "scatter"], default="line")
+    v.add_argument("--order", choices=["x", "rows"], default="x",
+                   help="join the points sorted by x (a function) or in the file's row order "
+                   "(a path, e.g. a trajectory)")
+    v.add_argument("--equal", action="store_true",
+                   help="the same scale on both axes (paths in the same unit)")
     v.add_argument("--labels", help="comma-separated names, one per file and column")
     v.add_argument("--logx", action="store_true")
     v.add_argument("--logy", nargs="?", const="log", choices=["log", "symlog"])

@@ -261,8 +261,12 @@ def csv_columns(args):
             if args.kind == "scatter":
                 axes.scatter(x_values[keep], y_values[keep], s=12, label=label)
             else:
-                order = np.argsort(x_values[keep], kind="stable")
-                axes.plot(x_values[keep][order], y_values[keep][order], lw=1.5, label=label,
+                x_kept, y_kept = x_values[keep], y_values[keep]
+                order = (np.argsort(x_kept, kind="stable") if args.order == "x"
+                         else np.arange(len(x_kept)))
+                axes.plot(x_kept[order], y_kept[order], lw=1.5, label=label,
                           marker="o" if args.kind == "linepoints" else None, markersize=3)
             k += 1
+    if args.equal:
+        axes.set_aspect("equal", adjustable="datalim")
     finish(figure, axes, args, args.x, ys[0] if len(ys) == 1 else "")

@@ -4,6 +4,7 @@ must find what the C++ reader finds.
     tendril_plot_test.py <tendril> <sample runs> <figure directory>"""
 import csv
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -93,6 +94,32 @@ class FigureTest(unittest.TestCase):
         self.assert_picture(self.draw("csv.png", "csv", *files, "--x", "time/total_timesteps",
                                       "--y", "train/entropy_loss,train/value_loss",
                                       "--kind", "scatter", "--logy", "symlog"))
+
+    def test_csv_paths_keep_the_row_order(self):
+        # A unit square walked round: joined in row order its x steps 0, 1, 1, 0, 0; sorted by x
+        # (the default, for functions) 0, 0, 0, 1, 1.
+        square = os.path.join(OUT, "square.csv")
+        with open(square, "w") as f:
+            f.write("x,y\n0,0\n1,0\n1,1\n0,1\n0,0\n")
+
+        def five_point_line_xs(*options):
+            svg = self.draw(f"square{len(options)}.svg", "csv", square, "--x", "x", "--y", "y",
+                            *options)
+            with open(svg) as f:
+                text = f.read()
+            paths = [re.findall(r"[ML] ([-0-9.e]+) [-0-9.e]+", d)
+                     for d in re.findall(r'<path d="([^"]*)"', text)]
+            lines = [[float(x) for x in p] for p in paths if len(p) == 5]
+            self.assertEqual(len(lines), 1, "one drawn line of five points")
+            return lines[0]
+
+        xs = five_point_line_xs("--order", "rows", "--equal")
+        self.assertEqual([xs[0] == xs[i] for i in range(5)], [True, False, False, True, True])
+        self.assertAlmostEqual(xs[1], xs[2])
+        xs = five_point_line_xs()
+        self.assertEqual([xs[0] == xs[i] for i in range(5)], [True, True, True, False, False])
+        self.assert_picture(self.draw("square.png", "csv", square, "--x", "x", "--y", "y",
+                                      "--order", "rows", "--equal"))
 
     def test_bad_input_is_named_and_writes_nothing(self):
         out = os.path.join(OUT, "never.png")
