@@ -2,6 +2,7 @@
 import os
 
 import matplotlib
+import matplotlib.patches
 import matplotlib.ticker
 
 matplotlib.use("Agg")
@@ -267,6 +268,13 @@ def csv_columns(args):
                 axes.plot(x_kept[order], y_kept[order], lw=1.5, label=label,
                           marker="o" if args.kind == "linepoints" else None, markersize=3)
             k += 1
+    for (x0, x1, y0, y1), label in args.rect:
+        axes.add_patch(matplotlib.patches.Rectangle((min(x0, x1), min(y0, y1)), abs(x1 - x0),
+                                                    abs(y1 - y0), facecolor="#6c7a89", alpha=0.35,
+                                                    edgecolor="#6c7a89", label=label))
+    for (x, y), label in args.mark:
+        axes.plot([x], [y], marker="*", markersize=12, color="#d62728", linestyle="none",
+                  label=label)
     if args.equal:
         axes.set_aspect("equal", adjustable="datalim")
     finish(figure, axes, args, args.x, ys[0] if len(ys) == 1 else "")

@@ -121,6 +121,31 @@ class FigureTest(unittest.TestCase):
         self.assert_picture(self.draw("square.png", "csv", square, "--x", "x", "--y", "y",
                                       "--order", "rows", "--equal"))
 
+    def test_csv_rectangles_and_marks(self):
+        square = os.path.join(OUT, "square_marked.csv")
+        with open(square, "w") as f:
+            f.write("x,y\n0,0\n1,0\n1,1\n0,1\n0,0\n")
+
+        def closed_quadrilaterals(name, *options):
+            svg = self.draw(name, "csv", square, "--x", "x", "--y", "y", "--order", "rows",
+                            *options)
+            with open(svg) as f:
+                text = f.read()
+            ds = re.findall(r'<path d="([^"]*)"', text)
+            return [d for d in ds if d.strip().endswith("z") and len(re.findall("[ML] ", d)) == 4]
+
+        plain = closed_quadrilaterals("plain.svg")
+        shaded = closed_quadrilaterals("shaded.svg", "--rect", "0.2,0.6,0.1,0.5", "--mark",
+                                       "0.5,0.5:target")
+        self.assertEqual(len(shaded), len(plain) + 1, "one rectangle more")
+        self.assert_picture(self.draw("shaded.png", "csv", square, "--x", "x", "--y", "y",
+                                      "--rect", "0.2,0.6,0.1,0.5:box", "--mark", "0.5,0.5"))
+        out = os.path.join(OUT, "bad_rect.png")
+        result = plot("csv", square, "--x", "x", "--y", "y", "--rect", "0,1,2", "--out", out)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("expected X0,X1,Y0,Y1[:LABEL], got '0,1,2'", result.stderr)
+        self.assertFalse(os.path.exists(out))
+
     def test_bad_input_is_named_and_writes_nothing(self):
         out = os.path.join(OUT, "never.png")
         result = plot("csv", os.path.join(RUN, "progress.csv"), "--x", "nope", "--y",
