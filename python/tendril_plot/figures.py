@@ -70,7 +70,7 @@ def curves(args):
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     groups = {}
     for run in runs:
-        key = seed_group(os.path.basename(os.path.normpath(run))) if args.group == "seeds" else run
+        key = seed_group(run) if args.group == "seeds" else run
         groups.setdefault(key, []).append(run)
     if labels and len(labels) != len(groups):
         raise PlotError(f"--labels names {len(labels)} curves, there are {len(groups)}: "

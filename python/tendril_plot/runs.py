@@ -63,11 +63,14 @@ def expand_runs(paths):
     return runs
 
 
-def seed_group(name):
+def seed_group(run):
     """A run's name without its seed: "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" →
-    "ppo_case1". Runs differing only by seed share a group."""
+    "ppo_case1". Runs differing only by seed share a group. A run named by its seed alone (a
+    sweep over seeds: "ur5_ppo_base/seed_42") belongs to its directory: "ur5_ppo_base"."""
+    path = os.path.normpath(run)
+    name = os.path.basename(path)
     stripped = re.sub(r"(^|[-_])seed_?\d+", "", name, count=1, flags=re.IGNORECASE)
-    return stripped or name
+    return stripped or os.path.dirname(path) or name
 
 
 def curve(run, metric, x_column=STEPS):

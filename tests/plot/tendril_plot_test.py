@@ -81,6 +81,24 @@ class FigureTest(unittest.TestCase):
         self.assert_picture(self.draw("sweep_eval.png", "curves", os.path.join(RUNS, "sweep"),
                                       "--spread", "minmax", "--metric", "eval"))
 
+    def test_sweeps_over_seeds_alone_are_one_curve_each(self):
+        # Two sweeps whose runs are named by their seed alone: each sweep is one group.
+        sweeps = [os.path.join(OUT, "seed_sweeps", name) for name in ("sweep_a", "sweep_b")]
+        for k, sweep in enumerate(sweeps):
+            for seed in (1, 2, 3):
+                run = os.path.join(sweep, f"seed_{seed}")
+                os.makedirs(run, exist_ok=True)
+                with open(os.path.join(run, "progress.csv"), "w") as f:
+                    f.write("time/total_timesteps,rollout/success_rate\n")
+                    for step in range(1, 6):
+                        f.write(f"{step * 1000},{min(1.0, 0.1 * step * (k + 1) + 0.01 * seed)}\n")
+        self.assert_picture(self.draw("seed_sweeps.png", "curves", *sweeps, "--metric",
+                                      "rollout/success_rate", "--labels", "A,B", "--seeds"))
+        result = plot("curves", *sweeps, "--labels", "A,B,C", "--out",
+                      os.path.join(OUT, "never_seed_sweeps.png"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("there are 2: sweep_a, sweep_b", result.stderr)
+
     def test_episode_snapshots(self):
         recorded = sorted(f for f in os.listdir(EPISODES) if f.startswith("episode_"))
         self.assertEqual(len(recorded), 1)
