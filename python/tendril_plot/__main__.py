@@ -14,6 +14,25 @@ def size(text):
     return (width, height)
 
 
+def numbers_with_label(text, count, form):
+    values, _, label = text.partition(":")
+    try:
+        numbers = [float(v) for v in values.split(",")]
+    except ValueError:
+        numbers = []
+    if len(numbers) != count:
+        raise argparse.ArgumentTypeError(f"expected {form}, got '{text}'")
+    return numbers, label or None
+
+
+def rectangle(text):
+    return numbers_with_label(text, 4, "X0,X1,Y0,Y1[:LABEL]")
+
+
+def mark(text):
+    return numbers_with_label(text, 2, "X,Y[:LABEL]")
+
+
 def common(parser, default_size):
     parser.add_argument("--out", required=True, help="the figure's file: .png, .svg or .pdf")
     parser.add_argument("--title")
@@ -67,6 +86,14 @@ def main(argv):
                    "box: box plots of y at each distinct value of x")
     v.add_argument("--yerr", help="comma-separated columns, one per --y column: each point's ± "
                    "error, drawn as error bars (e.g. final_eval_std of a sweep's summary)")
+    v.add_argument("--order", choices=["x", "rows"], default="x",
+                   help="join the points sorted by x (a function) or in the file's row order "
+                   "(a path, e.g. a trajectory; the same as --kind path)")
+    v.add_argument("--rect", action="append", type=rectangle, default=[],
+                   help="X0,X1,Y0,Y1[:LABEL]: a shaded rectangle in data units (an obstacle, a "
+                   "region); repeatable")
+    v.add_argument("--mark", action="append", type=mark, default=[],
+                   help="X,Y[:LABEL]: a marked point in data units (a target); repeatable")
     v.add_argument("--labels", help="comma-separated names, one per file and column")
     v.add_argument("--where", action="append", metavar="COLUMN=VALUE",
                    help="keep only the rows whose COLUMN is (=) or is not (!=) VALUE; repeatable")

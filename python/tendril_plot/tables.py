@@ -3,6 +3,7 @@ series and panels by the values of a column (results pages' data files)."""
 import math
 import os
 
+import matplotlib.patches
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.ticker import MaxNLocator
@@ -155,6 +156,7 @@ def csv_columns(args):
                           label)
         if args.kind == "box":
             _boxes(axes, box_series)
+        _regions(axes, args)
         if panel is not None:
             if titles:
                 title = titles[p]
@@ -207,7 +209,7 @@ def _draw(axes, args, x, y, error, colour, style, width, alpha, label):
     if args.kind == "scatter":
         axes.scatter(x, y, s=args.marker_size, color=colour, alpha=alpha, lw=0, label=label)
         return
-    if args.kind == "path":  # in the order of the rows: a trajectory in the plane
+    if args.kind == "path" or args.order == "rows":  # the rows' order: a trajectory
         axes.plot(x, y, color=colour, ls=style, lw=width, alpha=alpha, label=label)
         return
     order = np.argsort(x, kind="stable")
@@ -217,6 +219,17 @@ def _draw(axes, args, x, y, error, colour, style, width, alpha, label):
         return
     axes.plot(x[order], y[order], color=colour, ls=style, lw=width, alpha=alpha, label=label,
               marker="o" if args.kind == "linepoints" else None, markersize=3)
+
+
+def _regions(axes, args):
+    """--rect: shaded rectangles (obstacles, regions); --mark: marked points (targets)."""
+    for (x0, x1, y0, y1), label in args.rect:
+        axes.add_patch(matplotlib.patches.Rectangle((min(x0, x1), min(y0, y1)), abs(x1 - x0),
+                                                    abs(y1 - y0), facecolor="#6c7a89", alpha=0.35,
+                                                    edgecolor="#6c7a89", label=label))
+    for (x, y), label in args.mark:
+        axes.plot([x], [y], marker="*", markersize=12, color="#d62728", linestyle="none",
+                  label=label)
 
 
 def _boxes(axes, series):

@@ -4,6 +4,7 @@ must find what the C++ reader finds.
     tendril_plot_test.py <tendril> <sample runs> <figure directory>"""
 import csv
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -82,6 +83,24 @@ class FigureTest(unittest.TestCase):
         self.assert_picture(self.draw("sweep_eval.png", "curves", os.path.join(RUNS, "sweep"),
                                       "--spread", "minmax", "--metric", "eval"))
 
+    def test_sweeps_over_seeds_alone_are_one_curve_each(self):
+        # Two sweeps whose runs are named by their seed alone: each sweep is one group.
+        sweeps = [os.path.join(OUT, "seed_sweeps", name) for name in ("sweep_a", "sweep_b")]
+        for k, sweep in enumerate(sweeps):
+            for seed in (1, 2, 3):
+                run = os.path.join(sweep, f"seed_{seed}")
+                os.makedirs(run, exist_ok=True)
+                with open(os.path.join(run, "progress.csv"), "w") as f:
+                    f.write("time/total_timesteps,rollout/success_rate\n")
+                    for step in range(1, 6):
+                        f.write(f"{step * 1000},{min(1.0, 0.1 * step * (k + 1) + 0.01 * seed)}\n")
+        self.assert_picture(self.draw("seed_sweeps.png", "curves", *sweeps, "--metric",
+                                      "rollout/success_rate", "--labels", "A,B", "--seeds"))
+        result = plot("curves", *sweeps, "--labels", "A,B,C", "--out",
+                      os.path.join(OUT, "never_seed_sweeps.png"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("there are 2: sweep_a, sweep_b", result.stderr)
+
     def test_episode_snapshots(self):
         recorded = sorted(f for f in os.listdir(EPISODES) if f.startswith("episode_"))
         self.assertEqual(len(recorded), 1)
@@ -156,6 +175,57 @@ class FigureTest(unittest.TestCase):
             self.assertEqual(result.returncode, 1, bad)
             self.assertIn(message, result.stderr)
             self.assertFalse(os.path.exists(out))
+
+    def test_csv_paths_keep_the_row_order(self):
+        # A unit square walked round: joined in row order its x steps 0, 1, 1, 0, 0; sorted by x
+        # (the default, for functions) 0, 0, 0, 1, 1.
+        square = os.path.join(OUT, "square.csv")
+        with open(square, "w") as f:
+            f.write("x,y\n0,0\n1,0\n1,1\n0,1\n0,0\n")
+
+        def five_point_line_xs(*options):
+            svg = self.draw(f"square{len(options)}.svg", "csv", square, "--x", "x", "--y", "y",
+                            *options)
+            with open(svg) as f:
+                text = f.read()
+            paths = [re.findall(r"[ML] ([-0-9.e]+) [-0-9.e]+", d)
+                     for d in re.findall(r'<path d="([^"]*)"', text)]
+            lines = [[float(x) for x in p] for p in paths if len(p) == 5]
+            self.assertEqual(len(lines), 1, "one drawn line of five points")
+            return lines[0]
+
+        xs = five_point_line_xs("--order", "rows", "--equal")
+        self.assertEqual([xs[0] == xs[i] for i in range(5)], [True, False, False, True, True])
+        self.assertAlmostEqual(xs[1], xs[2])
+        xs = five_point_line_xs()
+        self.assertEqual([xs[0] == xs[i] for i in range(5)], [True, True, True, False, False])
+        self.assert_picture(self.draw("square.png", "csv", square, "--x", "x", "--y", "y",
+                                      "--order", "rows", "--equal"))
+
+    def test_csv_rectangles_and_marks(self):
+        square = os.path.join(OUT, "square_marked.csv")
+        with open(square, "w") as f:
+            f.write("x,y\n0,0\n1,0\n1,1\n0,1\n0,0\n")
+
+        def closed_quadrilaterals(name, *options):
+            svg = self.draw(name, "csv", square, "--x", "x", "--y", "y", "--order", "rows",
+                            *options)
+            with open(svg) as f:
+                text = f.read()
+            ds = re.findall(r'<path d="([^"]*)"', text)
+            return [d for d in ds if d.strip().endswith("z") and len(re.findall("[ML] ", d)) == 4]
+
+        plain = closed_quadrilaterals("plain.svg")
+        shaded = closed_quadrilaterals("shaded.svg", "--rect", "0.2,0.6,0.1,0.5", "--mark",
+                                       "0.5,0.5:target")
+        self.assertEqual(len(shaded), len(plain) + 1, "one rectangle more")
+        self.assert_picture(self.draw("shaded.png", "csv", square, "--x", "x", "--y", "y",
+                                      "--rect", "0.2,0.6,0.1,0.5:box", "--mark", "0.5,0.5"))
+        out = os.path.join(OUT, "bad_rect.png")
+        result = plot("csv", square, "--x", "x", "--y", "y", "--rect", "0,1,2", "--out", out)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("expected X0,X1,Y0,Y1[:LABEL], got '0,1,2'", result.stderr)
+        self.assertFalse(os.path.exists(out))
 
     def test_bad_input_is_named_and_writes_nothing(self):
         out = os.path.join(OUT, "never.png")
