@@ -50,9 +50,16 @@ def is_run(directory):
                for name in ("config.yaml", "progress.csv", "eval.csv"))
 
 
+def natural_key(text):
+    """Orders names with numbers by their values: "n_steps_256" before "n_steps_1024",
+    "tau_0.005" before "tau_0.01"."""
+    return [(0, float(part), "") if i % 2 else (1, 0.0, part)
+            for i, part in enumerate(re.split(r"(\d+(?:\.\d+)?)", text))]
+
+
 def expand_runs(paths):
     """Run directories named directly, and those directly inside the other directories given
-    (a sweep's output, seeds side by side), in order."""
+    (a sweep's output, seeds side by side), in order: the numbers in names by value."""
     runs = []
     for path in paths:
         if is_run(path):
@@ -60,8 +67,9 @@ def expand_runs(paths):
             continue
         if not os.path.isdir(path):
             raise PlotError(f"{path}: neither a run directory nor a directory of runs")
-        inside = sorted(os.path.join(path, d) for d in os.listdir(path)
-                        if not d.startswith(".") and is_run(os.path.join(path, d)))
+        inside = sorted((os.path.join(path, d) for d in os.listdir(path)
+                         if not d.startswith(".") and is_run(os.path.join(path, d))),
+                        key=natural_key)
         if not inside:
             raise PlotError(f"{path}: no run directories inside")
         runs.extend(inside)

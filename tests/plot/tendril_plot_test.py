@@ -19,7 +19,7 @@ import numpy as np  # noqa: E402
 import matplotlib.image  # noqa: E402
 
 from tendril_plot.episode import EpisodeError, read_episode  # noqa: E402
-from tendril_plot.runs import read_csv, seed_group  # noqa: E402
+from tendril_plot.runs import natural_key, read_csv, seed_group  # noqa: E402
 from tendril_plot.tables import distinct  # noqa: E402
 
 RUN = os.path.join(RUNS, "sweep", "ppo_seed0")
@@ -252,6 +252,15 @@ class SeedGroupTest(unittest.TestCase):
                  ("seed_42", ""): "seeds", ("tau_0.01", ""): "tau_0.01"}
         for (name, parent), group in cases.items():
             self.assertEqual(seed_group(name, parent), group, name)
+
+    def test_runs_are_ordered_by_the_numbers_in_their_names(self):
+        # A sweep's directory lists batch sizes as text ("1024" < "256"); curves, their
+        # --labels and legends follow the values.
+        names = ["n_steps_1024-seed_0", "n_steps_16384-seed_0", "n_steps_256-seed_1",
+                 "n_steps_256-seed_0", "n_steps_4096-seed_0", "tau_0.005", "tau_0.01"]
+        self.assertEqual(sorted(names, key=natural_key),
+                         ["n_steps_256-seed_0", "n_steps_256-seed_1", "n_steps_1024-seed_0",
+                          "n_steps_4096-seed_0", "n_steps_16384-seed_0", "tau_0.005", "tau_0.01"])
 
 
 class EpisodeReaderTest(unittest.TestCase):
