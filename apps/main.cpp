@@ -27,9 +27,14 @@ commands:
   train --resume <run-dir>
       Train a controller; write the run directory (config, progress.csv, TensorBoard events,
       eval.csv, checkpoints/, model.policy). --stop-at pauses at the first checkpoint past STEPS.
-  eval <run-dir> [--episodes N] [--deterministic] [--seed S] [--best]
+  eval <run-dir> [--episodes N] [--deterministic] [--seed S] [--best] [--open-loop]
+       [--out FILE.csv] [--set key=value ...]
       Evaluate a run's policy (model.policy, else its newest checkpoint; --best:
-      best_model.policy).
+      best_model.policy): returns, lengths and every info value at the episodes' ends (mean
+      and sd: a success flag's mean is the success rate); --set changes the run's experiment
+      for this (e.g. env.id, env.params: a policy on conditions it was not trained on);
+      --open-loop replays the actions of one episode in the run's own environment instead;
+      --out writes one row per episode (return, length, final info values) to a new CSV.
   rollout <run-dir> [--episodes N | --steps N] [--out FILE.csv] [--seed S] [--best]
           [--deterministic|--stochastic] [--set key=value ...]
       Run a run's policy for N episodes (reset seeds S, S+1, ...) or N steps; print the mean
@@ -53,6 +58,9 @@ commands:
   replay-pneumatic <replay.yaml> [--set key=value ...] [--out DIR]
       Replay one pressure trajectory on the pneumatic arm in repeated trials per damage
       scenario; write each module's mean distance from the base trial (replay_gap.csv).
+  prepare-pneumatic --train FILE [--test FILE] --out FILE
+      The pneumatic arm's recordings (collect-pneumatic) as a prepared data set for
+      `dynamics fit`: time_s, tips x1 … z3 [mm], commanded pressures p1 … p9 [bar], split.
   record <run-dir> [--episodes N] [--best] [--out DIR] [--seed S] [--deterministic|--stochastic]
       Record episodes of a run's model (as eval picks it) into <run-dir>/episodes/ (or DIR):
       the scene of every step, actions, rewards, info (docs/episode_format.md).
@@ -136,6 +144,7 @@ int main(int argc, char** argv) {
 #endif
 #ifdef TENDRIL_WITH_DYNAMICS
     if (args[0] == "dynamics") return tendril::apps::dynamics_command(rest);
+    if (args[0] == "prepare-pneumatic") return tendril::apps::pneumatic_prepare_command(rest);
 #endif
     std::fprintf(stderr, "tendril: unknown command '%s'\n\n%s", args[0].c_str(), kUsage);
     return 2;

@@ -30,6 +30,7 @@ TEST(Registry, ListsTheBuiltinReferenceTasks) {
                                                         "IdentityBox-v0",
                                                         "MountainCarContinuous-v0",
                                                         "Pendulum-v1",
+                                                        "PneumaticArm/LearnedReach-v0",
                                                         "PneumaticArm/Reach-v0",
                                                         "PneumaticArm/Robot-v0",
                                                         "Safety/DoubleIntegrator-v0",
@@ -53,7 +54,8 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "Beam/TrajectoryFollow-v0, CartPole-v1, "
             "Elastica/OrientedReach-v0, Elastica/StructuredObstacles-v0, Elastica/Tracking3D-v0, "
             "Elastica/UnstructuredObstacles-v0, Identity-v0, IdentityBox-v0, "
-            "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/Reach-v0, "
+            "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/LearnedReach-v0, "
+            "PneumaticArm/Reach-v0, "
             "PneumaticArm/Robot-v0, Safety/DoubleIntegrator-v0, Safety/DubinsCar-v0, "
             "SmaLimb/LearnedReach-v0, SmaLimb/Robot-v0, UR5/Reach-v0");
 }
@@ -112,8 +114,9 @@ TEST(Registry, AddingAnEnvironmentIsOneCall) {
 // steps.
 TEST(Registry, EveryBuiltinEnvironmentRunsAnEpisodeToItsLimit) {
   const std::set<std::string> terminates_under_random_actions{
-      "CartPole-v1", "PneumaticArm/Reach-v0", "Safety/DoubleIntegrator-v0", "Safety/DubinsCar-v0",
-      "UR5/Reach-v0"};
+      "CartPole-v1",           "PneumaticArm/LearnedReach-v0",
+      "PneumaticArm/Reach-v0", "Safety/DoubleIntegrator-v0",
+      "Safety/DubinsCar-v0",   "UR5/Reach-v0"};
   for (const std::string& id : registered_ids()) {
     const auto env = make(id);
     const std::optional<int64_t> registered = builtin_registry().spec(id).max_episode_steps;

@@ -46,6 +46,18 @@ TorchMirror mirror(const DenseMlp& mlp, const Eigen::VectorXf& parameters) {
   return result;
 }
 
+torch::Tensor activated(Activation activation, const torch::Tensor& x) {
+  switch (activation) {
+    case Activation::kTanh:
+      return torch::tanh(x);
+    case Activation::kRelu:
+      return torch::relu(x);
+    case Activation::kSoftsign:
+      return x / (1 + torch::abs(x));
+  }
+  return x;
+}
+
 void check_against_autograd(Activation hidden, bool tanh_output, bool trunk = false) {
   const DenseMlp mlp = trunk ? DenseMlp::trunk({5, 16, 12, 3}, hidden)
                              : DenseMlp({5, 16, 12, 3}, hidden, tanh_output);
@@ -68,7 +80,7 @@ void check_against_autograd(Activation hidden, bool tanh_output, bool trunk = fa
   for (std::size_t layer = 0; layer < net.weights.size(); ++layer) {
     y = torch::nn::functional::linear(y, net.weights[layer], net.biases[layer]);
     const bool last = layer + 1 == net.weights.size();
-    if (!last || trunk) y = hidden == Activation::kTanh ? torch::tanh(y) : torch::relu(y);
+    if (!last || trunk) y = activated(hidden, y);
     if (last && tanh_output) y = torch::tanh(y);
   }
   (y * to_tensor(output_gradient).t()).sum().backward();
@@ -95,6 +107,31 @@ void check_against_autograd(Activation hidden, bool tanh_output, bool trunk = fa
 
 TEST(DenseMlp, ReluPassesMatchAutograd) { check_against_autograd(Activation::kRelu, false); }
 TEST(DenseMlp, TanhPassesMatchAutograd) { check_against_autograd(Activation::kTanh, false); }
+TEST(DenseMlp, SoftsignPassesMatchAutograd) {
+  check_against_autograd(Activation::kSoftsign, false);
+  check_against_autograd(Activation::kSoftsign, false, /*trunk=*/true);
+}
+TEST(DenseMlp, SoftsignIsXOverOnePlusAbsX) {
+  // One unit with weight 1 and bias 0: the output is softsign(x) itself; its derivative
+  // 1 / (1 + |x|)² by hand: x = 3 → 0.75 and 1/16, x = −1 → −0.5 and 1/4.
+  const DenseMlp mlp = DenseMlp::trunk({1, 1}, Activation::kSoftsign);
+  Eigen::VectorXf parameters(2);
+  parameters << 1.0f, 0.0f;
+  DenseMlp::Tape tape;
+  Eigen::MatrixXf inputs(1, 2);
+  inputs << 3.0f, -1.0f;
+  mlp.forward(parameters, inputs, tape);
+  EXPECT_FLOAT_EQ(tape.output()(0, 0), 0.75f);
+  EXPECT_FLOAT_EQ(tape.output()(0, 1), -0.5f);
+  Eigen::VectorXf gradient = Eigen::VectorXf::Zero(2);
+  Eigen::MatrixXf input_gradient;
+  std::vector<Eigen::MatrixXf> scratch;
+  mlp.backward(parameters, tape, Eigen::MatrixXf::Ones(1, 2), gradient, &input_gradient, scratch);
+  EXPECT_FLOAT_EQ(input_gradient(0, 0), 1.0f / 16.0f);
+  EXPECT_FLOAT_EQ(input_gradient(0, 1), 0.25f);
+  EXPECT_EQ(parse_activation("softsign", "test"), Activation::kSoftsign);
+  EXPECT_EQ(activation_name(Activation::kSoftsign), "softsign");
+}
 TEST(DenseMlp, TanhOutputPassesMatchAutograd) { check_against_autograd(Activation::kRelu, true); }
 TEST(DenseMlp, TrunkPassesMatchAutograd) {
   check_against_autograd(Activation::kTanh, false, /*trunk=*/true);

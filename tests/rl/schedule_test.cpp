@@ -21,6 +21,25 @@ TEST(Schedule, ConstantAndLinearToZero) {
   EXPECT_DOUBLE_EQ(linear.at(0.0), 0.0);
 }
 
+TEST(Schedule, LinearToAFloor) {
+  Schedule actor{3e-3, true};
+  actor.final = 1e-4;
+  EXPECT_DOUBLE_EQ(actor.at(1.0), 3e-3);
+  EXPECT_DOUBLE_EQ(actor.at(0.5), 1.55e-3);
+  EXPECT_DOUBLE_EQ(actor.at(0.0), 1e-4);
+  const Config config = Config::parse(
+      "learning_rate: 3e-3\nlearning_rate_schedule: linear\nlearning_rate_final: 1e-4\n");
+  const Schedule read = read_schedule(config, "learning_rate", {3e-4, false});
+  EXPECT_DOUBLE_EQ(read.at(0.0), 1e-4);
+  EXPECT_THROW(
+      read_schedule(Config::parse("learning_rate_final: 1e-4\n"), "learning_rate", {3e-4, false}),
+      Error);
+  EXPECT_THROW(read_schedule(Config::parse("learning_rate_schedule: linear\n"
+                                           "learning_rate_final: -1\n"),
+                             "learning_rate", {3e-4, false}),
+               Error);
+}
+
 TEST(Schedule, ReadFromConfig) {
   const Config config = Config::parse("learning_rate: 1e-3\nlearning_rate_schedule: linear\n");
   const Schedule read = read_schedule(config, "learning_rate", {3e-4, false});

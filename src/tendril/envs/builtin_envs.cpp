@@ -52,6 +52,10 @@ void register_builtin_envs(Registry& registry) {
   registry.add({pneumatic::ReachEnv::kRobotId, &pneumatic::ReachEnv::create_on_robot,
                 pneumatic::ReachEnv::kEpisodeSteps,
                 "pneumatic arm reaches a goal behind a plate (task on the robot twin)"});
+  // The same task inside a learned model of the arm, where the seed trains its policy.
+  registry.add({pneumatic::ReachEnv::kModelId, &pneumatic::ReachEnv::create_on_model,
+                pneumatic::ReachEnv::kEpisodeSteps,
+                "pneumatic arm reaches a goal behind a plate (task in a learned model)"});
   // The SMA limb of seed 001 as its software sees it (throttles in, bend readings out); no time
   // limit: data collection runs for hours, tasks bring their own.
   registry.add({sma_limb::SmaLimbEnv::kId, &sma_limb::SmaLimbEnv::create, std::nullopt,

@@ -7,11 +7,21 @@ namespace tendril::nn {
 Activation parse_activation(std::string_view name, const std::string& where) {
   if (name == "tanh") return Activation::kTanh;
   if (name == "relu") return Activation::kRelu;
-  throw Error("unknown activation '" + std::string(name) + "', expected tanh or relu", where);
+  if (name == "softsign") return Activation::kSoftsign;
+  throw Error("unknown activation '" + std::string(name) + "', expected tanh, relu or softsign",
+              where);
 }
 
 std::string activation_name(Activation activation) {
-  return activation == Activation::kTanh ? "tanh" : "relu";
+  switch (activation) {
+    case Activation::kTanh:
+      return "tanh";
+    case Activation::kRelu:
+      return "relu";
+    case Activation::kSoftsign:
+      return "softsign";
+  }
+  return "tanh";
 }
 
 }  // namespace tendril::nn

@@ -17,17 +17,22 @@ using ConstVectorMap = Eigen::Map<const Eigen::VectorXf>;
 void activate(Activation activation, Eigen::MatrixXf& values) {
   if (activation == Activation::kTanh) {
     values.array() = values.array().tanh();
+  } else if (activation == Activation::kSoftsign) {
+    values.array() = values.array() / (1.0f + values.array().abs());
   } else {
     values.array() = values.array().max(0.0f);
   }
 }
 
 // Multiplies `gradient` in place by the activation's derivative, expressed through the
-// activation's output y: tanh' = 1 − y², relu' = [y > 0].
+// activation's output y: tanh' = 1 − y², softsign' = 1 / (1 + |x|)² = (1 − |y|)²,
+// relu' = [y > 0].
 void scale_by_derivative(Activation activation, const Eigen::MatrixXf& output,
                          Eigen::MatrixXf& gradient) {
   if (activation == Activation::kTanh) {
     gradient.array() *= 1.0f - output.array().square();
+  } else if (activation == Activation::kSoftsign) {
+    gradient.array() *= (1.0f - output.array().abs()).square();
   } else {
     gradient.array() = (output.array() > 0.0f).select(gradient.array(), 0.0f);
   }

@@ -33,13 +33,58 @@ EvaluationResult evaluate_policy(const Policy& policy, Env& env, int episodes, b
       Step step = env.step(policy.act(observation, deterministic, rng));
       episode_return += step.reward;
       ++length;
-      if (step.terminated || step.truncated) break;
+      if (step.terminated || step.truncated) {
+        result.final_infos.push_back(std::move(step.info));
+        break;
+      }
       observation = std::move(step.observation);
     }
     result.returns.push_back(episode_return);
     result.lengths.push_back(length);
   }
   return result;
+}
+
+EvaluationResult replay_actions(const std::vector<Action>& actions, Env& env, int episodes,
+                                uint64_t seed) {
+  require(episodes >= 1 && !actions.empty(), "needs at least one episode and one action",
+          "rl::replay_actions");
+  EvaluationResult result;
+  for (int episode = 0; episode < episodes; ++episode) {
+    if (episode == 0) {
+      env.reset(seed);
+    } else {
+      env.reset();
+    }
+    double episode_return = 0.0;
+    int64_t length = 0;
+    for (const Action& action : actions) {
+      Step step = env.step(action);
+      episode_return += step.reward;
+      ++length;
+      if (step.terminated || step.truncated || length == static_cast<int64_t>(actions.size())) {
+        result.final_infos.push_back(std::move(step.info));
+        break;
+      }
+    }
+    result.returns.push_back(episode_return);
+    result.lengths.push_back(length);
+  }
+  return result;
+}
+
+std::vector<Action> recorded_actions(const Policy& policy, Env& env, bool deterministic,
+                                     uint64_t seed) {
+  Rng rng(seed, /*stream=*/1);
+  std::vector<Action> actions;
+  Observation observation = env.reset(seed);
+  while (true) {
+    actions.push_back(policy.act(observation, deterministic, rng));
+    Step step = env.step(actions.back());
+    if (step.terminated || step.truncated) break;
+    observation = std::move(step.observation);
+  }
+  return actions;
 }
 
 }  // namespace tendril::rl

@@ -12,6 +12,7 @@ namespace tendril::rl {
 struct EvaluationResult {
   std::vector<double> returns;  // undiscounted, one per episode
   std::vector<int64_t> lengths;
+  std::vector<Info> final_infos;  // each episode's last step's info (success, distances, …)
   double mean_return() const;
   double std_return() const;
 };
@@ -21,5 +22,15 @@ struct EvaluationResult {
 // from a stream derived from `seed` too.
 EvaluationResult evaluate_policy(const Policy& policy, Env& env, int episodes, bool deterministic,
                                  uint64_t seed);
+
+// Open-loop evaluation (seed 002 §V-B, Fig. 7: "replaying the model-env action sequence" on the
+// robot): `actions` — e.g. recorded_actions of a policy in the environment it was trained in —
+// applied in order to `env` in each of `episodes` episodes (reset seeds `seed`, then unseeded),
+// whatever `env` observes. An episode ends when `env` ends it or the actions run out.
+EvaluationResult replay_actions(const std::vector<Action>& actions, Env& env, int episodes,
+                                uint64_t seed);
+// The actions `policy` takes in one episode of `env` (reset with `seed`).
+std::vector<Action> recorded_actions(const Policy& policy, Env& env, bool deterministic,
+                                     uint64_t seed);
 
 }  // namespace tendril::rl

@@ -1,5 +1,7 @@
 #include "tendril/rl/schedule.hpp"
 
+#include <cmath>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::rl {
@@ -14,6 +16,16 @@ Schedule read_schedule(const Config& algo, const std::string& key, const Schedul
     throw Error("expected constant or linear, got '" + kind + "'", algo.where(schedule_key));
   }
   schedule.linear = kind == "linear";
+  const std::string final_key = key + "_final";
+  if (schedule.linear) {
+    schedule.final = algo.get_or<double>(final_key, fallback.final);
+    if (!std::isfinite(schedule.final) || schedule.final < 0.0) {
+      throw Error("must be finite and >= 0", algo.where(final_key));
+    }
+  } else if (algo.has(final_key) && algo.get<double>(final_key) != 0.0) {
+    // A constant schedule has no end value (0, the default, is accepted as written).
+    throw Error("needs " + schedule_key + ": linear", algo.where(final_key));
+  }
   return schedule;
 }
 

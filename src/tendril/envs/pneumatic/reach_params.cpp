@@ -1,8 +1,12 @@
-// ReachEnv's parameters from an experiment's env.params, and PneumaticArm/Reach-v0.
+// ReachEnv's parameters from an experiment's env.params, PneumaticArm/Reach-v0 and
+// PneumaticArm/LearnedReach-v0.
 #include <cmath>
 
 #include "tendril/core/error.hpp"
+#include "tendril/envs/learned/model_loader.hpp"
 #include "tendril/envs/pneumatic/arm_params.hpp"
+#include "tendril/envs/pneumatic/linear_arm_model.hpp"
+#include "tendril/envs/pneumatic/model_dynamics.hpp"
 #include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
 #include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_dynamics.hpp"
@@ -103,6 +107,28 @@ std::unique_ptr<Env> ReachEnv::create_on_robot(const Config& params) {
   Setup setup = setup_from(params, kRobotId);
   auto dynamics = std::make_unique<RobotDynamics>(RobotEnv::create(params.child("robot")));
   return std::make_unique<ReachEnv>(std::move(setup), std::move(dynamics));
+}
+
+std::unique_ptr<Env> ReachEnv::create_on_model(const Config& params) {
+  Setup setup = setup_from(params, kModelId);
+  std::shared_ptr<DynamicsModel> model;
+  if (params.has("model")) {
+    model = load_dynamics_model(params.get<std::string>("model"), kModelId);
+  } else {
+    model = std::make_shared<LinearArmModel>();
+  }
+  TipVector rest = LinearArmModel::rest();
+  if (params.has("rest_mm")) {
+    rest = vector_of<9>(params, "rest_mm", rest);
+  } else if (params.has("rest_from")) {
+    const std::string file = params.get<std::string>("rest_from");
+    rest = read_pneumatic_dataset(file).tips_mm.row(0).transpose();
+  } else if (params.has("model")) {
+    throw Error("a learned model needs the arm's rest: rest_mm or rest_from",
+                params.source() + ": " + params.path());
+  }
+  return std::make_unique<ReachEnv>(std::move(setup),
+                                    std::make_unique<ModelDynamics>(std::move(model), rest));
 }
 
 }  // namespace tendril::envs::pneumatic

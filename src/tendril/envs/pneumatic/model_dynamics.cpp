@@ -1,0 +1,79 @@
+#include "tendril/envs/pneumatic/model_dynamics.hpp"
+
+#include "tendril/core/error.hpp"
+
+namespace tendril::envs::pneumatic {
+
+namespace {
+
+constexpr const char* kWhere = "pneumatic::ModelDynamics";
+
+const DynamicsModel& checked(const std::shared_ptr<DynamicsModel>& model) {
+  require(model != nullptr, "no model", kWhere);
+  require(model->state_dim() == 9 && model->input_dim() == 9,
+          "the model must map 9 tip coordinates and 9 pressures to 9 tip coordinates, not " +
+              std::to_string(model->state_dim()) + " and " + std::to_string(model->input_dim()),
+          kWhere);
+  return *model;
+}
+
+}  // namespace
+
+ModelDynamics::ModelDynamics(std::shared_ptr<DynamicsModel> model, const TipVector& rest_mm)
+    : model_(std::move(model)),
+      rest_(rest_mm),
+      windows_(1, checked(model_).window_length(), 9, 9),
+      inputs_(BatchMatrix::Zero(1, 9)),
+      tips_(rest_mm) {
+  require(rest_.allFinite(), "the rest tips must be finite", kWhere);
+  windows_.reset(0, rest_.cast<float>());
+}
+
+TipVector ModelDynamics::reset(std::optional<uint64_t> /*seed*/) {
+  windows_.reset(0, rest_.cast<float>());
+  tips_ = rest_;
+  finite_ = true;
+  return tips_;
+}
+
+TipVector ModelDynamics::step(const ChamberVector& pressures_bar) {
+  inputs_.row(0) = pressures_bar.transpose().cast<float>();
+  model_->step(windows_, inputs_, next_);
+  tips_ = next_.row(0).transpose().cast<double>();
+  finite_ = tips_.allFinite();
+  return tips_;
+}
+
+void ModelDynamics::save_state(SnapshotWriter& out) const {
+  out.section("ModelDynamics");
+  windows_.save_state(out);
+  out.put_matrix(tips_);
+  out.put(finite_);
+}
+
+void ModelDynamics::load_state(SnapshotReader& in) {
+  in.section("ModelDynamics");
+  HistoryWindows windows = windows_;
+  windows.load_state(in);
+  TipVector tips;
+  in.get_matrix(tips);
+  const bool finite = in.get_bool();
+  windows_ = std::move(windows);
+  tips_ = tips;
+  finite_ = finite;
+}
+
+void ModelDynamics::describe_scene(Scene& scene) const {
+  constexpr double kMetresPerMillimetre = 1e-3;
+  Scene::Path arm;
+  arm.role = "arm";
+  arm.points = Eigen::Matrix3Xd::Zero(3, 4);
+  for (int module = 0; module < 3; ++module) {
+    const Eigen::Vector3d tip = kMetresPerMillimetre * tips_.segment<3>(3 * module);
+    arm.points.col(module + 1) = tip;
+    scene.spheres.push_back({"module_tip", tip, 0.01});
+  }
+  scene.paths.push_back(std::move(arm));
+}
+
+}  // namespace tendril::envs::pneumatic

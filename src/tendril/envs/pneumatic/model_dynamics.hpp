@@ -1,0 +1,42 @@
+#pragma once
+
+#include <memory>
+
+#include "tendril/envs/learned/dynamics_model.hpp"
+#include "tendril/envs/learned/history_windows.hpp"
+#include "tendril/envs/pneumatic/arm_dynamics.hpp"
+
+namespace tendril::envs::pneumatic {
+
+// ArmDynamics over a learned model of the arm (seed 002 eq. (1): x_{t+1} = F(x_t, x_{t−1}, τ_t,
+// τ_{t−1}, τ_{t−2}), run recursively on its own predictions, §III-C): the model's window of
+// [tips (mm), pressures (bar)] rows is this source's whole state. A reset fills every row with
+// the rest tips and vented chambers (the arm hanging still before the episode's first
+// command), so a deterministic model starts every episode alike; the seed is not used.
+class ModelDynamics final : public ArmDynamics {
+ public:
+  // Raises Error unless the model maps 9 tips and 9 pressures to 9 tips and `rest_mm` is finite.
+  ModelDynamics(std::shared_ptr<DynamicsModel> model, const TipVector& rest_mm);
+
+  TipVector reset(std::optional<uint64_t> seed) override;
+  TipVector step(const ChamberVector& pressures_bar) override;
+  bool finite() const override { return finite_; }
+  bool supports_snapshots() const override { return true; }
+  void save_state(SnapshotWriter& out) const override;
+  void load_state(SnapshotReader& in) override;
+  // The predicted arm as the polyline base → module tips and a sphere per tip (lab frame, m).
+  void describe_scene(Scene& scene) const override;
+
+  const TipVector& rest() const { return rest_; }
+  const HistoryWindows& windows() const { return windows_; }
+
+ private:
+  std::shared_ptr<DynamicsModel> model_;
+  TipVector rest_;
+  HistoryWindows windows_;
+  BatchMatrix inputs_, next_;
+  TipVector tips_;
+  bool finite_ = true;
+};
+
+}  // namespace tendril::envs::pneumatic

@@ -1,0 +1,211 @@
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "support/error_message.hpp"
+#include "support/scratch_directory.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/envs/learned/model_loader.hpp"
+#include "tendril/envs/pneumatic/linear_arm_model.hpp"
+#include "tendril/envs/pneumatic/model_dynamics.hpp"
+#include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
+#include "tendril/envs/pneumatic/reach_env.hpp"
+#include "tendril/envs/registry.hpp"
+
+namespace tendril::envs::pneumatic {
+namespace {
+
+// A model that answers step k with the k-th of a recorded list of tips, and keeps the
+// pressures (bar) each prediction read in the newest row of its window.
+class ScriptedModel : public DynamicsModel {
+ public:
+  explicit ScriptedModel(std::vector<TipVector> tips) : tips_(std::move(tips)) {}
+  int state_dim() const override { return 9; }
+  int input_dim() const override { return 9; }
+  int window_length() const override { return 3; }
+  double sample_period() const override { return 0.1; }
+  void predict(const BatchMatrix& windows, BatchMatrix& next_states) override {
+    inputs.push_back(windows.row(0).tail(9).transpose().cast<double>());
+    next_states = tips_.at(calls_++).transpose().cast<float>();
+  }
+  std::vector<ChamberVector> inputs;
+
+ private:
+  std::vector<TipVector> tips_;
+  std::size_t calls_ = 0;
+};
+
+ReachEnv& as_reach(Env& env) { return dynamic_cast<ReachEnv&>(env); }
+
+Action delta_on(int chamber, float value) {
+  Action action = Action::Zero(9);
+  action[chamber] = value;
+  return action;
+}
+
+// The learned-model environment steps the same task as PneumaticArm/Reach-v0: fed, through a
+// scripted model, the tips the deterministic twin produced under a sequence of deltas, it gives
+// the same rewards (eq. (2) with the −2 step penalty), terminations, observation
+// normalisation and info, up to the float precision of a model's output; and the model reads
+// the pressures p = 0.75 (a + 1) that the twin was sent.
+TEST(LearnedReach, StepsTheTaskAsReachOnTheTwinDoesForTheSameTips) {
+  const std::string task = "task: G1\nnormalization: {distance_scale_mm: 250}\n";
+  auto twin = ReachEnv::create_on_robot(Config::parse(task + "robot: {stochastic: false}"));
+  const Observation twin_start = twin->reset(0);
+  const TipVector rest = as_reach(*twin).tips();
+  std::vector<Action> actions;
+  std::vector<Step> twin_steps;
+  std::vector<TipVector> tips;
+  std::vector<ChamberVector> pressures;
+  // Toward +x (chambers 2 and 3 of each module bend it away from 120° and 240°) until module
+  // 3's tip leaves B at x = 90 mm, with a refused step in between.
+  for (int t = 0; t < 40; ++t) {
+    Action action = Action::Zero(9);
+    for (int m = 0; m < 3; ++m) action[3 * m + 1] = action[3 * m + 2] = 0.05f;
+    if (t == 5) action[0] = 0.2f * (1.0f + 1e-3f);  // beyond the rate limit: not taken
+    actions.push_back(action);
+    twin_steps.push_back(twin->step(action));
+    tips.push_back(as_reach(*twin).tips());
+    pressures.push_back(
+        as_reach(*twin).command().unaryExpr([](double a) { return ReachEnv::pressure_of(a); }));
+    if (twin_steps.back().terminated) break;
+  }
+  ASSERT_GT(twin_steps.size(), 5u);
+
+  auto model = std::make_shared<ScriptedModel>(tips);
+  const Config params = Config::parse(task);
+  ReachEnv learned(ReachEnv::setup_from(params, ReachEnv::kModelId),
+                   std::make_unique<ModelDynamics>(model, rest));
+  EXPECT_TRUE(learned.reset(0).isApprox(twin_start, 1e-6f));
+  for (std::size_t t = 0; t < twin_steps.size(); ++t) {
+    const Step step = learned.step(actions[t]);
+    const Step& expected = twin_steps[t];
+    EXPECT_NEAR(step.reward, expected.reward, 1e-3 * std::max(1.0, std::abs(expected.reward))) << t;
+    EXPECT_EQ(step.terminated, expected.terminated) << t;
+    EXPECT_TRUE(step.observation.isApprox(expected.observation, 1e-5f)) << t;
+    for (const char* key :
+         {"is_success", "collision", "warning", "outside_boundary", "rate_limited", "nan"}) {
+      EXPECT_EQ(*step.info.get(key), *expected.info.get(key)) << key << " at " << t;
+    }
+    EXPECT_NEAR(*step.info.get("goal_distance_mm"), *expected.info.get("goal_distance_mm"), 1e-3);
+    EXPECT_TRUE(model->inputs[t].isApprox(pressures[t], 1e-6)) << t;
+  }
+  EXPECT_EQ(*twin_steps[5].info.get("rate_limited"), 1.0);
+  EXPECT_TRUE(twin_steps.back().terminated);
+  EXPECT_EQ(*twin_steps.back().info.get("outside_boundary"), 1.0);
+}
+
+// Without a model the stand-in answers in closed form: vented chambers keep the arm at rest;
+// one step of 0.2 on chamber 1 of module 1 (0.15 bar) moves every tip toward −x by
+// β kBend span p and down by β kExtension p.
+TEST(LearnedReach, TheStandInStartsAtRestAndBendsAwayFromTheChamber) {
+  EXPECT_EQ(make(ReachEnv::kModelId)->observation_space().size(), 11);
+  auto env = ReachEnv::create_on_model(Config());
+  EXPECT_EQ(env->observation_space().size(), 11);
+  EXPECT_EQ(env->action_space().describe(), "Box(9, [-0.2, 0.2])");
+  env->reset(0);
+  ReachEnv& task = as_reach(*env);
+  EXPECT_TRUE(task.tips().isApprox(LinearArmModel::rest(), 1e-6));
+  env->step(Action::Zero(9));
+  EXPECT_TRUE(task.tips().isApprox(LinearArmModel::rest(), 1e-6));
+  env->step(delta_on(0, 0.2f));
+  const double beta = 1.0 - std::exp(-0.1 / 0.3), p = 0.15;
+  for (int m = 0; m < 3; ++m) {
+    EXPECT_NEAR(task.tips()[3 * m], -beta * LinearArmModel::kBend * (m + 1) * p, 1e-3) << m;
+    EXPECT_NEAR(task.tips()[3 * m + 1], 0.0, 1e-3) << m;
+    EXPECT_NEAR(task.tips()[3 * m + 2],
+                LinearArmModel::rest()[3 * m + 2] - beta * LinearArmModel::kExtension * p, 1e-3)
+        << m;
+  }
+}
+
+TEST(LearnedReach, ASnapshotRepeatsTheEpisodeBitForBit) {
+  auto env = make(ReachEnv::kModelId, Config::parse("task: G2"));
+  env->reset(3);
+  for (int t = 0; t < 7; ++t) env->step(delta_on(t % 9, 0.2f));
+  Snapshot snapshot;
+  SnapshotWriter writer(snapshot);
+  env->save_state(writer);
+  std::vector<Step> first;
+  for (int t = 0; t < 10; ++t) first.push_back(env->step(delta_on((2 * t) % 9, -0.1f)));
+  SnapshotReader reader(snapshot);
+  env->load_state(reader);
+  for (int t = 0; t < 10; ++t) {
+    const Step step = env->step(delta_on((2 * t) % 9, -0.1f));
+    EXPECT_EQ(step.observation, first[t].observation) << t;
+    EXPECT_EQ(step.reward, first[t].reward) << t;
+    EXPECT_EQ(step.terminated, first[t].terminated) << t;
+  }
+}
+
+TEST(LearnedReach, SameConfigSameEpisode) {
+  auto a = make(ReachEnv::kModelId), b = make(ReachEnv::kModelId);
+  EXPECT_EQ(a->reset(5), b->reset(5));
+  for (int t = 0; t < 30; ++t) {
+    const Action action = delta_on((5 * t) % 9, (t % 3 == 0) ? -0.2f : 0.15f);
+    const Step sa = a->step(action), sb = b->step(action);
+    EXPECT_EQ(sa.observation, sb.observation) << t;
+    EXPECT_EQ(sa.reward, sb.reward) << t;
+  }
+}
+
+class LearnedReachFiles : public testing::ScratchDirectoryTest {
+ protected:
+  LearnedReachFiles() : ScratchDirectoryTest("learned_reach") {}
+};
+
+// A learned model opens through the installed loader and starts from the rest row of a data
+// set (its first row: the arm hanging still before the signal's first command).
+TEST_F(LearnedReachFiles, TheModelComesFromTheLoaderAndTheRestFromTheData) {
+  PneumaticDataset data;
+  data.time_s = Eigen::Vector2d(0.0, 0.1);
+  data.commands_bar = PneumaticDataset::Columns::Zero(2, 9);
+  data.tips_mm = PneumaticDataset::Columns::Zero(2, 9);
+  data.tips_mm.row(0) << 1, 2, -200, 3, 4, -400, 5, 6, -600;
+  const auto file = directory_ / "rest.csv";
+  write_pneumatic_dataset(file, data);
+
+  install_dynamics_model_loader([](const std::string& path) -> std::unique_ptr<DynamicsModel> {
+    if (path != "scripted") throw Error("no model at " + path);
+    return std::make_unique<LinearArmModel>(3);
+  });
+  auto env =
+      ReachEnv::create_on_model(Config::parse("model: scripted\nrest_from: " + file.string()));
+  env->reset(0);
+  EXPECT_EQ(as_reach(*env).tips(), data.tips_mm.row(0).transpose());
+  auto explicit_rest = ReachEnv::create_on_model(
+      Config::parse("model: scripted\nrest_mm: [0, 0, -1, 0, 0, -2, 0, 0, -3]"));
+  explicit_rest->reset(0);
+  EXPECT_EQ(as_reach(*explicit_rest).tips()[8], -3.0);
+  EXPECT_NE(testing::error_message([] {
+              make(ReachEnv::kModelId, Config::parse("model: scripted"));
+            }).find("rest_mm or rest_from"),
+            std::string::npos);
+  EXPECT_THROW(
+      make(ReachEnv::kModelId, Config::parse("model: elsewhere\nrest_mm: [0,0,0,0,0,0,0,0,0]")),
+      Error);
+  install_dynamics_model_loader(nullptr);
+  EXPECT_NE(testing::error_message([] {
+              make(ReachEnv::kModelId, Config::parse("model: runs/some_model"));
+            }).find("built without the dynamics layer"),
+            std::string::npos);
+}
+
+TEST(LearnedReach, AModelOfAnotherShapeIsRefused) {
+  class Wrong : public DynamicsModel {
+   public:
+    int state_dim() const override { return 9; }
+    int input_dim() const override { return 6; }
+    int window_length() const override { return 3; }
+    double sample_period() const override { return 0.1; }
+    void predict(const BatchMatrix&, BatchMatrix&) override {}
+  };
+  EXPECT_NE(testing::error_message([] {
+              ModelDynamics(std::make_shared<Wrong>(), LinearArmModel::rest());
+            }).find("9 pressures"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace tendril::envs::pneumatic
