@@ -68,6 +68,20 @@ TEST(Config, NestingDeeperThanTheParserTakesIsNamedAsSuch) {
   EXPECT_EQ(message.rfind("deep.yaml: lists or mappings nested too deeply", 0), 0u) << message;
 }
 
+// Found by tests/fuzz/config_fuzz: in a flow mapping, `0,[ 1, 2, 3, 4]` makes a sequence a key,
+// which reading the keys used to turn into a yaml-cpp exception instead of an Error.
+TEST(Config, KeysThatAreNotNamesAreRefused) {
+  const std::string crash = "gridd:\n  - {key: seed, values: 0,[ 1, 2, 3, 4]}\noutput: runs/s\n";
+  EXPECT_EQ(error_message([&] { Config::parse(crash, "sweep.yaml"); }),
+            "sweep.yaml: a key must be a name, got a sequence at line 2, column 27");
+  EXPECT_EQ(error_message([] { Config::parse("a:\n  {x: 1}: 2\n", "map.yaml"); }),
+            "map.yaml: a key must be a name, got a mapping at line 2, column 3");
+  Config config = Config::parse("a: 1\n", "exp.yaml");
+  EXPECT_EQ(error_message([&] { config.set("b", "{[1, 2]: x}"); }),
+            "--set b: a key must be a name, got a sequence at line 1, column 2");
+  EXPECT_EQ(config.keys(), (std::vector<std::string>{"a"}));
+}
+
 TEST(Config, SetOverridesAndCreatesKeys) {
   Config config = Config::parse("algo:\n  batch_size: 64\n");
   config.set("algo.batch_size", "16000");

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -249,6 +250,40 @@ TEST_F(EpisodeFileTest, AFlippedByteIsACorruptRecordNamedByItsOffset) {
   const PartialEpisode partial = read_partial_episode(file);
   EXPECT_FALSE(partial.truncated);
   EXPECT_EQ(partial.episode.frames.size(), 4u);
+}
+
+// Found by tests/fuzz/episode_fuzz: a layout record (with right checksums) claiming an action of
+// 4294967217 floats made the frame reader allocate 16 GiB before noticing that its record holds
+// 29 bytes. The header, that layout and one frame record, as the fuzzer wrote them; then the same
+// with an action of 2^30 floats, which only the frame's size check refuses.
+TEST_F(EpisodeFileTest, SizesBeyondTheRecordAreRefusedBeforeAllocating) {
+  const std::string hex =
+      "74656e6472696c2d657069736f64650a4817000000010000000100000003000000656e7604000000"
+      "7365656461b370bd4c1c000000b1ffffff00000000010000000800000064697374616e6365000000"
+      "0060764b37461d00000074656e6472696c2d65736f647065690a4817000000010000000100000086"
+      "4afc2d";
+  std::string bytes;
+  for (std::size_t i = 0; i < hex.size(); i += 2) {
+    bytes.push_back(static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16)));
+  }
+  const fs::path file = directory_ / "huge_action.tep";
+  write_raw(file, bytes);
+  std::string message = error_message([&] { read_episode(file); });
+  EXPECT_NE(message.find("an action of 4294967217 numbers"), std::string::npos) << message;
+
+  // The layout record: tag at byte 48, u32 length 28, payload from byte 53 (the action size
+  // first), its CRC-32 at byte 81.
+  const uint32_t action_size = 1u << 30;
+  std::memcpy(bytes.data() + 53, &action_size, sizeof action_size);
+  const uint32_t crc = crc32(bytes.data() + 48, 5 + 28);
+  std::memcpy(bytes.data() + 81, &crc, sizeof crc);
+  write_raw(file, bytes);
+  message = error_message([&] { read_episode(file); });
+  EXPECT_NE(message.find("record ends inside a field"), std::string::npos) << message;
+  const PartialEpisode partial = read_partial_episode(file);
+  EXPECT_EQ(partial.episode.action_size, 1 << 30);
+  EXPECT_TRUE(partial.episode.frames.empty());
+  EXPECT_NE(partial.problem.find("at byte 85"), std::string::npos) << partial.problem;
 }
 
 TEST_F(EpisodeFileTest, OtherFilesAreNotEpisodes) {

@@ -43,7 +43,7 @@ class Cursor {
   Cursor(const std::string& bytes, std::size_t end) : bytes_(bytes), end_(end) {}
   bool take(void* out, std::size_t size) {
     if (end_ - offset_ < size) return false;
-    std::memcpy(out, bytes_.data() + offset_, size);
+    if (size > 0) std::memcpy(out, bytes_.data() + offset_, size);
     offset_ += size;
     return true;
   }
@@ -231,7 +231,8 @@ Eigen::VectorXf ArchiveReader::get_floats(const std::string& key, int64_t size) 
          std::to_string(size));
   }
   Eigen::VectorXf values(count);
-  std::memcpy(values.data(), payload.data(), payload.size());
+  // An empty array has no storage (a null pointer, which memcpy must not be given).
+  if (count > 0) std::memcpy(values.data(), payload.data(), payload.size());
   return values;
 }
 
@@ -239,7 +240,7 @@ std::vector<double> ArchiveReader::get_doubles(const std::string& key) const {
   const auto& payload = entry(key, ArchiveWriter::Type::kDoubles, "a double array").payload;
   if (payload.size() % sizeof(double) != 0) fail("entry '" + key + "' is malformed");
   std::vector<double> values(payload.size() / sizeof(double));
-  std::memcpy(values.data(), payload.data(), payload.size());
+  if (!values.empty()) std::memcpy(values.data(), payload.data(), payload.size());
   return values;
 }
 

@@ -148,12 +148,33 @@ void find_unused(const YAML::Node& node, const std::string& path, const std::set
   }
 }
 
+// Every mapping key in `node` must be a scalar (a name): YAML also allows sequences and mappings
+// as keys (`{[1, 2]: x}`), which no config key path can name.
+void require_scalar_keys(const YAML::Node& node, const std::string& where) {
+  if (node.IsMap()) {
+    for (const auto& entry : node) {
+      if (!entry.first.IsScalar()) {
+        const YAML::Mark mark = entry.first.Mark();
+        throw Error("a key must be a name, got " + type_name(entry.first) +
+                        (mark.is_null() ? std::string()
+                                        : " at line " + std::to_string(mark.line + 1) +
+                                              ", column " + std::to_string(mark.column + 1)),
+                    where);
+      }
+      require_scalar_keys(entry.second, where);
+    }
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) require_scalar_keys(item, where);
+  }
+}
+
 YAML::Node parse_yaml(std::string_view text, const std::string& source) {
   try {
     YAML::Node root = YAML::Load(std::string(text));
     if (root.IsNull()) return YAML::Node(YAML::NodeType::Map);
     if (!root.IsMap())
       throw Error("the document must be a mapping, got " + type_name(root), source);
+    require_scalar_keys(root, source);
     return root;
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp stops at a fixed depth with a message ("bad file") that names no cause.
@@ -362,6 +383,7 @@ void Config::set(std::string_view dotted_path, std::string_view value) {
   } catch (const YAML::ParserException& e) {
     throw Error("malformed value '" + clipped(value) + "': " + e.msg, where);
   }
+  require_scalar_keys(parsed, where);
   YAML::Node node = node_->node;
   std::size_t start = 0;
   while (true) {

@@ -194,12 +194,17 @@ void Bytes::raw(const void* data, std::size_t size) {
   buffer_.append(static_cast<const char*>(data), size);
 }
 
-void Cursor::raw(void* data, std::size_t size) {
+void Cursor::expect(std::size_t size) const {
   if (size > bytes_.size() - position_) {
     throw Error("record ends inside a field (byte " + std::to_string(position_) + " of " +
                     std::to_string(bytes_.size()) + ")",
                 where_);
   }
+}
+
+void Cursor::raw(void* data, std::size_t size) {
+  expect(size);
+  if (size == 0) return;  // an empty array's data() may be null, which memcpy must not be given
   std::memcpy(data, bytes_.data() + position_, size);
   position_ += size;
 }

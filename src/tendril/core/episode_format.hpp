@@ -88,6 +88,8 @@ class Cursor {
   // A count of items each at least `item_bytes` long, checked against the bytes left.
   uint32_t count(std::size_t item_bytes);
   bool done() const { return position_ == bytes_.size(); }
+  // Raises Error unless `size` more bytes are left: a check before allocating room for them.
+  void expect(std::size_t size) const;
 
  private:
   void raw(void* data, std::size_t size);

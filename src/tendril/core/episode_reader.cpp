@@ -4,6 +4,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 
 #include "tendril/core/crc32c.hpp"
@@ -42,6 +43,9 @@ class Decoder {
 
   void layout(fmt::Cursor& in) {
     layout_ = fmt::decode_layout(in);
+    if (layout_->action_size > static_cast<uint32_t>(std::numeric_limits<int>::max())) {
+      throw Error("an action of " + std::to_string(layout_->action_size) + " numbers");
+    }
     out_.episode.action_size = static_cast<int>(layout_->action_size);
     latest_.assign(layout_->primitives.size(), {});
     has_data_.assign(layout_->primitives.size(), false);
@@ -56,6 +60,8 @@ class Decoder {
     const uint8_t flags = in.u8();
     frame.terminated = (flags & 1u) != 0;
     frame.truncated = (flags & 2u) != 0;
+    // Sizes come from the file: the record must hold the numbers before room is made for them.
+    in.expect(sizeof(float) * std::size_t{layout_->action_size});
     Action action(layout_->action_size);
     bool any_action = false;
     for (uint32_t i = 0; i < layout_->action_size; ++i) {
@@ -76,6 +82,7 @@ class Decoder {
         continue;
       }
       std::vector<float>& data = latest_[i];
+      in.expect(sizeof(float) * layout_->primitives[i].float_count());
       data.resize(layout_->primitives[i].float_count());
       for (float& value : data) value = in.f32();
       has_data_[i] = true;

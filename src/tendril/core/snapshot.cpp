@@ -38,6 +38,7 @@ void SnapshotReader::fail(const std::string& what) const {
 
 void SnapshotReader::raw(void* data, std::size_t size) {
   if (bytes_.size() - offset_ < size) fail("the snapshot ends early");
+  if (size == 0) return;  // an empty array's data() may be null, which memcpy must not be given
   std::memcpy(data, bytes_.data() + offset_, size);
   offset_ += size;
 }

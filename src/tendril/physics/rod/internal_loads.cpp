@@ -101,7 +101,9 @@ template <bool kWithLoads>
 void voronoi_pass(const RodModel& model, RodState& state) {
   const int count = model.n_voronoi();
   if (count <= 0) return;
-  const Rows q(state.directors), kappa(state.curvatures), couple(state.internal_couples);
+  // Separate declarations: each deduces its own Rows type (directors are 9 × n, the rest 3 × n).
+  const Rows q(state.directors);
+  const Rows kappa(state.curvatures), couple(state.internal_couples);
   const Rows bend(state.voronoi_bend_couples), quadrature(state.voronoi_quadrature);
   const Rows stiffness(model.bend_stiffness), rest_kappa(model.rest_curvatures);
   const double* rest_voronoi = model.rest_voronoi_lengths.data();
