@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_env.hpp"
@@ -21,15 +22,11 @@
 namespace tendril::envs::pneumatic {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using bench::Clock;
+using bench::median;
+
 constexpr int kControlSteps = 600;  // 60 s of arm time
 constexpr double kRealArmStepsPerSecond = 10.0;
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 struct Resolution {
   int elements_per_module;

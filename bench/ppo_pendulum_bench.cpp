@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "sb3_baseline.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/nn/actor_critic.hpp"
@@ -36,16 +37,9 @@ namespace {
 constexpr int64_t kStepsPerRun = 32768;  // 16 rollouts of 1 env, 2 rollouts of 8 envs
 constexpr int64_t kBareMinibatches = 2000;
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
+using bench::Clock;
+using bench::median;
+using bench::seconds_since;
 
 struct LoopFigures {
   double wall_seconds = 0.0;

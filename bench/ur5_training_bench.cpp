@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "tendril/core/config.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/nn/threads.hpp"
@@ -27,16 +28,9 @@
 namespace tendril::rl {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
+using bench::Clock;
+using bench::median;
+using bench::seconds_since;
 
 struct Case {
   const char* file;    // under configs/ur5/
