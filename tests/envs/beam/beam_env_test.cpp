@@ -246,17 +246,18 @@ TEST(BeamEnv, ExplicitAndImplicitBeamsFollowTheSameTorques) {
   implicit->reset(8);
   explicit_->reset(8);
   double worst = 0.0;
+  double farthest_from_rest = 0.0;  // the comparison means something only if the tip moved
   for (int t = 0; t < 100; ++t) {
     Action action(5);
     for (int i = 0; i < 5; ++i) action[i] = static_cast<float>(0.2 * std::sin(0.3 * t + i));
     implicit->step(action);
     explicit_->step(action);
-    worst = std::max(
-        worst,
-        (task(*implicit).beam().tip_position() - task(*explicit_).beam().tip_position()).norm());
+    const Eigen::Vector2d tip = task(*implicit).beam().tip_position();
+    worst = std::max(worst, (tip - task(*explicit_).beam().tip_position()).norm());
+    farthest_from_rest = std::max(farthest_from_rest, (tip - Eigen::Vector2d(0, 0.75)).norm());
   }
   EXPECT_LT(worst, 0.02);
-  EXPECT_GT((task(*implicit).beam().tip_position() - Eigen::Vector2d(0, 0.75)).norm(), 0.05);
+  EXPECT_GT(farthest_from_rest, 0.05);
 }
 
 TEST(BeamEnv, SceneHasTheLatticeTheTargetAndItsPath) {

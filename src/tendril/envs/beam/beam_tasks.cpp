@@ -61,7 +61,7 @@ void read_common(const Config& params, BeamTaskSpec& spec) {
   lattice.numerics.time_step = params.get_or<double>("time_step", lattice.numerics.time_step);
   lattice.numerics.newton_iterations =
       params.get_or<int>("newton_iterations", lattice.numerics.newton_iterations);
-  lattice.mass_damping = params.get_or<double>("mass_damping", lattice.mass_damping);
+  lattice.mass_damping = params.get_or<double>("mass_damping", kTaskMassDamping);
   lattice.stiffness_damping = params.get_or<double>("stiffness_damping", lattice.stiffness_damping);
   try {
     lattice.validate();
