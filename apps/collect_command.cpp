@@ -180,7 +180,9 @@ int collect_command(const std::vector<std::string>& args) {
   if (task == "explore" || task == "babble") return collect_data(config, task);
   if (task == "replay") return collect::replay(config);
   if (task == "coverage") return collect::compare_coverage(config);
-  throw Error("unknown task '" + task + "' (calibrate, explore, babble, replay, coverage)",
+  if (task == "open_loop") return collect::open_loop(config);
+  throw Error("unknown task '" + task +
+                  "' (calibrate, explore, babble, replay, coverage, open_loop)",
               where(config, "task"));
 }
 

@@ -1,5 +1,6 @@
 // The tasks of `tendril collect` behind the thesis' figures: open-loop replays after cool-downs
-// (Fig. 1.1c) and exploration against babbling (Fig. 4.2).
+// (Fig. 1.1c), exploration against babbling (Fig. 4.2) and the limb's response to the open-loop
+// test inputs (Fig. 4.4's ground truth).
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -8,7 +9,9 @@
 #include "collect_support.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/snapshot.hpp"
+#include "tendril/data/prepare.hpp"
 #include "tendril/data/table.hpp"
+#include "tendril/envs/sma_limb/open_loop_inputs.hpp"
 
 namespace tendril::apps::collect {
 
@@ -153,6 +156,65 @@ int replay(const Config& config) {
   }
   data::write_table(output, table, schema);
   std::printf("wrote %s\n", output.c_str());
+  return 0;
+}
+
+int open_loop(const Config& config) {
+  const std::vector<std::string> inputs = config.get<std::vector<std::string>>("inputs");
+  require(!inputs.empty(), "list at least one input", where(config, "inputs"));
+  const int64_t steps = config.get_or<int64_t>("steps", 800);
+  const double amplitude = config.get_or<double>("amplitude", 10.0);
+  const double ema_alpha = config.get_or<double>("ema_alpha", 0.8);
+  std::vector<envs::sma_limb::ThrottleSequence> sequences;
+  for (const std::string& kind : inputs) {
+    try {
+      sequences.push_back(envs::sma_limb::open_loop_inputs(kind, steps, amplitude));
+    } catch (const Error& e) {
+      throw Error(e.what_wrong(), where(config, "inputs"));
+    }
+  }
+  const uint64_t seed = config.get<uint64_t>("seed");
+  auto env = limb_env(config);
+  const std::string limb = config.child("env").get_or<std::string>("limb", "stiff");
+  const std::filesystem::path output = new_output(config, "output");
+  config.reject_unknown();
+
+  // The columns of a model's open-loop rollout (`tendril dynamics eval --open-loop`).
+  const data::TableSchema schema{
+      "tendril.sma_limb.open_loop v1",
+      {{"time_s", 3, {}, "since the input began, s"},
+       {"theta_x", 6, {}, "filtered bend towards +x, deg (as in prepared data sets)"},
+       {"theta_y", 6, {}, "filtered bend towards +y, deg"},
+       {"omega_x", 6, {}, "filtered bend rate towards +x, deg/s"},
+       {"omega_y", 6, {}, "filtered bend rate towards +y, deg/s"},
+       {"u_x", 0, {}, "x throttle sent from this reading to the next (the rounded input)"},
+       {"u_y", 0, {}, "y throttle sent"}}};
+  std::filesystem::create_directories(output);
+  const Stopwatch stopwatch;
+  double robot_time = 0.0;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const envs::sma_limb::LimbLog log = envs::sma_limb::drive_open_loop(*env, sequences[i], seed);
+    data::Table table;
+    table.set("limb", limb);
+    table.set("input", inputs[i]);
+    table.set("seed", std::to_string(seed));
+    table.set("ema_alpha", number(ema_alpha));
+    table.set("config", config.source());
+    table.values.resize(static_cast<Eigen::Index>(log.size()), 7);
+    data::StateFilter filter(ema_alpha);
+    for (std::size_t k = 0; k < log.size(); ++k) {
+      const Eigen::Vector4d state = filter.update(log.time_s[k], log.angles_deg[k]);
+      table.values.row(static_cast<Eigen::Index>(k)) << log.time_s[k], state.transpose(),
+          log.throttles[k].x(), log.throttles[k].y();
+    }
+    const std::filesystem::path file = output / ("open_loop_" + inputs[i] + ".csv");
+    data::write_table(file, table, schema);
+    robot_time += log.time_s.back();
+    std::printf("%-8s %zu readings over %.1f s, end state %.1f, %.1f deg -> %s\n",
+                inputs[i].c_str(), log.size(), log.time_s.back(), log.angles_deg.back().x(),
+                log.angles_deg.back().y(), file.c_str());
+  }
+  stopwatch.report(robot_time);
   return 0;
 }
 

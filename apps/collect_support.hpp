@@ -46,6 +46,8 @@ std::unique_ptr<envs::sma_limb::ThrottleSource> throttle_source(const std::strin
 
 // task: replay — the same open-loop throttles after different cool-downs (Fig. 1.1c).
 int replay(const Config& config);
+// task: open_loop — the limb driven by the open-loop test inputs (Fig. 4.4's ground truth).
+int open_loop(const Config& config);
 // task: coverage — exploration against babbling over several seeds (Fig. 4.2).
 int compare_coverage(const Config& config);
 

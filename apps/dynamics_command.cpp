@@ -13,6 +13,7 @@
 #include "tendril/dynamics/model_file.hpp"
 #include "tendril/dynamics/open_loop.hpp"
 #include "tendril/dynamics/torch_threads.hpp"
+#include "tendril/envs/sma_limb/open_loop_inputs.hpp"
 
 namespace tendril::apps {
 
@@ -102,7 +103,7 @@ void write_open_loop(Model& model, const SequenceData& data, const fs::path& dir
   const Eigen::VectorXd start = data.states.row(0).transpose();
   for (const std::string kind : kOpenLoopInputs) {
     const fs::path file = open_loop_file(directory, kind);
-    const RowMatrixXd inputs = open_loop_inputs(kind, 800);
+    const RowMatrixXd inputs = envs::sma_limb::open_loop_inputs(kind, 800);
     const RowMatrixXd states = open_loop_rollout(model, start, inputs);
     std::ostringstream out;
     out.precision(9);

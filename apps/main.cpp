@@ -74,7 +74,8 @@ commands:
       `tendril plot <kind> --help` lists each kind's options.
   collect <config.yaml> [--set key=value ...]
       Calibrate the SMA limb, collect its data sets (written beside their prepared form),
-      replay open-loop throttles after cool-downs, or compare exploration with babbling.
+      replay open-loop throttles after cool-downs, compare exploration with babbling, or
+      record the limb's response to the open-loop test inputs.
   track [circle|square|spiral|sml|all] [--limb stiff|soft] [--tip-mass KG] [--push N]
         [--steps N] [--seed S] [--out FILE.csv]
       Track reference paths in bend-angle space on the SMA limb twin with the PID baseline and

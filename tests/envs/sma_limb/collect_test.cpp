@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "tendril/core/error.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
 #include "tendril/envs/sma_limb/twin_limb_robot.hpp"
 
@@ -170,6 +171,50 @@ TEST(Collect, LogsEveryReadingWithWhatDroveItAndRepeatsWithTheSeed) {
   EXPECT_EQ(again.angles_deg, log.angles_deg);
   EXPECT_EQ(again.throttles, log.throttles);
   EXPECT_NE(other.throttles, log.throttles);
+}
+
+TEST(OpenLoopInputs, FollowTheThreeTestSignals) {
+  const ThrottleSequence sine = open_loop_inputs("sine", 800);
+  EXPECT_NEAR(sine(0, 0), 0.0, 1e-12);
+  EXPECT_NEAR(sine(0, 1), 10.0, 1e-12);
+  EXPECT_NEAR(sine(200, 0), 10.0, 1e-12);  // a quarter circle
+  EXPECT_NEAR(sine(200, 1), 0.0, 1e-9);
+  const ThrottleSequence square = open_loop_inputs("square", 800);
+  EXPECT_EQ(square.row(0), Eigen::RowVector2d(10, 10));
+  EXPECT_EQ(square.row(199), Eigen::RowVector2d(10, 10));
+  EXPECT_EQ(square.row(200), Eigen::RowVector2d(10, -10));
+  EXPECT_EQ(square.row(400), Eigen::RowVector2d(-10, -10));
+  EXPECT_EQ(square.row(799), Eigen::RowVector2d(-10, 10));
+  const ThrottleSequence saw = open_loop_inputs("sawtooth", 801);
+  EXPECT_EQ(saw(0, 0), -10.0);
+  EXPECT_NEAR(saw(1, 0) - saw(0, 0), 10 * 0.0025, 1e-12);  // 0.0025 per step, ×10
+  EXPECT_EQ(saw(0, 1), -5.0);     // a quarter period ahead: −1 + 2 · 200/800 = −0.5
+  EXPECT_EQ(saw(800, 0), -10.0);  // wraps after one period
+  EXPECT_THROW(open_loop_inputs("triangle", 10), Error);
+  EXPECT_THROW(open_loop_inputs("sine", 10, 10.0, 6), Error);
+}
+
+// The drive sends one rounded input per reading, ignores the readings, and logs the reading the
+// last input led to; the twin bends towards the throttles' sign.
+TEST(DriveOpenLoop, SendsOneRoundedInputPerReadingAndRepeatsWithTheSeed) {
+  ThrottleSequence inputs(300, 2);
+  for (Eigen::Index k = 0; k < inputs.rows(); ++k) inputs.row(k) << 6.4, -2.6;
+  inputs.row(0) << 0.5, -0.5;  // rounds away from zero: 1, −1
+  auto env = twin_env("stiff");
+  const LimbLog log = drive_open_loop(*env, inputs, 3);
+  ASSERT_EQ(log.size(), 301u);
+  EXPECT_EQ(log.throttles[0], Eigen::Vector2i(1, -1));
+  for (std::size_t k = 1; k < 300; ++k) ASSERT_EQ(log.throttles[k], Eigen::Vector2i(6, -3)) << k;
+  EXPECT_EQ(log.throttles[300], Eigen::Vector2i::Zero());
+  EXPECT_EQ(log.time_s[0], 0.0);
+  for (std::size_t k = 1; k < log.size(); ++k) ASSERT_GT(log.time_s[k], log.time_s[k - 1]);
+  // 300 readings of 55–75 ms: about 20 s, long enough for the coils to bend the limb.
+  EXPECT_GT(log.angles_deg.back().x(), 10.0);
+  EXPECT_LT(log.angles_deg.back().y(), -2.0);
+  const LimbCalibration nominal = LimbCalibration::nominal("stiff");
+  EXPECT_EQ(log.pwm[5], nominal.pwm_for(6, -3));
+  auto again = twin_env("stiff");
+  EXPECT_EQ(drive_open_loop(*again, inputs, 3).angles_deg, log.angles_deg);
 }
 
 // Fig. 4.2 of the thesis: over the same 10 minutes of robot time, count-based exploration covers

@@ -1,5 +1,6 @@
 #include "tendril/envs/sma_limb/collect.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "tendril/core/error.hpp"
@@ -15,6 +16,14 @@ double info_value(const Info& info, const char* key) {
   const std::optional<double> value = info.get(key);
   if (!value) throw Error(std::string("the environment reports no '") + key + "'", "collect");
   return *value;
+}
+
+std::array<int, 4> pwm_of(const Info& info) {
+  std::array<int, 4> pwm{};
+  for (int coil = 0; coil < 4; ++coil) {
+    pwm[coil] = static_cast<int>(info_value(info, kPwmKeys[coil]));
+  }
+  return pwm;
 }
 
 }  // namespace
@@ -47,14 +56,10 @@ LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& setting
     for (int k = 0; time < settings.duration_s && (k < readings || time < cool_until); ++k) {
       action << static_cast<float>(throttles.x()), static_cast<float>(throttles.y());
       const Step step = env.step(action);
-      std::array<int, 4> pwm{};
-      for (int coil = 0; coil < 4; ++coil) {
-        pwm[coil] = static_cast<int>(info_value(step.info, kPwmKeys[coil]));
-      }
       log.time_s.push_back(time);
       log.angles_deg.push_back(angles);
       log.throttles.push_back(throttles);
-      log.pwm.push_back(pwm);
+      log.pwm.push_back(pwm_of(step.info));
       if (step.terminated) throw Error("the robot failed during collection", "collect");
       angles = step.observation.head<2>().cast<double>();
       time = info_value(step.info, "time_s");
@@ -62,6 +67,30 @@ LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& setting
       if (cool_until < 0.0 && angles.cwiseAbs().maxCoeff() >= kCutoffDeg) break;
     }
   }
+  return log;
+}
+
+LimbLog drive_open_loop(Env& env, const ThrottleSequence& inputs, uint64_t seed) {
+  LimbLog log;
+  Observation observation = env.reset(seed);
+  double time = 0.0;
+  Action action(2);
+  for (Eigen::Index k = 0; k < inputs.rows(); ++k) {
+    const Eigen::Vector2i throttles = inputs.row(k).array().round().cast<int>().transpose();
+    action << static_cast<float>(throttles.x()), static_cast<float>(throttles.y());
+    const Step step = env.step(action);
+    log.time_s.push_back(time);
+    log.angles_deg.push_back(observation.head<2>().cast<double>());
+    log.throttles.push_back(throttles);
+    log.pwm.push_back(pwm_of(step.info));
+    if (step.terminated) throw Error("the robot failed during the open-loop drive", "collect");
+    observation = step.observation;
+    time = info_value(step.info, "time_s");
+  }
+  log.time_s.push_back(time);
+  log.angles_deg.push_back(observation.head<2>().cast<double>());
+  log.throttles.push_back(Eigen::Vector2i::Zero());
+  log.pwm.push_back({});
   return log;
 }
 

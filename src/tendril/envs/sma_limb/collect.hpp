@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tendril/core/env.hpp"
+#include "tendril/envs/sma_limb/open_loop_inputs.hpp"
 #include "tendril/envs/sma_limb/throttle_sources.hpp"
 
 namespace tendril::envs::sma_limb {
@@ -37,5 +38,10 @@ struct LimbLog {
 // and drives it with `source` until the readings reach settings.duration_s. The source draws from
 // its own stream, Rng(seed, 1).
 LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& settings, uint64_t seed);
+
+// Resets `env` with `seed` and sends `inputs` open loop, one row per reading, rounded to the
+// robot's integer throttles (the firmware's own cut-off still applies; nothing reacts to the
+// readings). Logs one row per input plus the reading after the last (throttles 0 there).
+LimbLog drive_open_loop(Env& env, const ThrottleSequence& inputs, uint64_t seed);
 
 }  // namespace tendril::envs::sma_limb
