@@ -1,7 +1,7 @@
 // Writes the binary seeds of the fuzz targets into <directory>/<target>/: a PPO checkpoint and
 // policy (archive_fuzz), a short recorded episode (episode_fuzz), an event file (event_file_fuzz,
-// with its mode byte), a replay buffer (replay_buffer_fuzz) and a progress.csv (table_fuzz),
-// each written by the code that writes them for users.
+// with its mode byte), a replay buffer (replay_buffer_fuzz), a progress.csv and a pneumatic-arm
+// recording (table_fuzz), each written by the code that writes them for users.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +10,7 @@
 
 #include "tendril/core/episode_writer.hpp"
 #include "tendril/core/scalar_log.hpp"
+#include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
 #include "tendril/rl/ppo/ppo.hpp"
 #include "tendril/rl/replay_buffer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -85,5 +86,15 @@ int main(int argc, char** argv) {
     buffer.add(observation, Eigen::VectorXf::Constant(1, 0.2f), 1.0f, observation, i == 4);
   }
   buffer.save(root / "replay_buffer_fuzz" / "buffer.bin");
+
+  envs::pneumatic::PneumaticDataset recording;
+  recording.metadata = {{"command", "collect-pneumatic"}, {"seed", "0"}};
+  recording.time_s = Eigen::Vector3d(0.0, 0.1, 0.2);
+  recording.commands_bar.setConstant(3, 9, 0.5);
+  recording.pressures_bar.setConstant(3, 9, 0.4);
+  recording.tips_mm.setConstant(3, 9, -120.0);
+  const fs::path recording_file = root / "table_fuzz" / "pneumatic.csv";
+  fs::remove(recording_file);
+  envs::pneumatic::write_pneumatic_dataset(recording_file, recording);
   return 0;
 }
