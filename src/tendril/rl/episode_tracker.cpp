@@ -5,6 +5,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
+#include "tendril/envs/wrappers/curriculum.hpp"
 #include "tendril/envs/wrappers/episode_statistics.hpp"
 
 namespace tendril::rl {
@@ -29,6 +30,10 @@ void EpisodeTracker::record(const envs::VecStep& step) {
       successes_.push_back(*success > 0.5 ? 1.0 : 0.0);
       if (successes_.size() > kWindow) successes_.pop_front();
     }
+    if (const auto level = step.infos[i].get(envs::Curriculum::kLevelKey)) {
+      levels_.push_back(*level);
+      if (levels_.size() > kWindow) levels_.pop_front();
+    }
     if (!episode_return || !episode_length) continue;
     returns_.push_back(*episode_return);
     lengths_.push_back(*episode_length);
@@ -48,11 +53,17 @@ std::optional<double> EpisodeTracker::success_rate() const {
   return mean(successes_);
 }
 
+std::optional<double> EpisodeTracker::curriculum_level() const {
+  if (levels_.empty()) return std::nullopt;
+  return mean(levels_);
+}
+
 void EpisodeTracker::report(Progress& progress) const {
   progress.episodes = episodes_;
   progress.episode_return_mean = mean_return();
   progress.episode_length_mean = mean_length();
   progress.success_rate = success_rate();
+  progress.curriculum_level = curriculum_level();
 }
 
 void EpisodeTracker::save(ArchiveWriter& writer) const {
@@ -60,6 +71,7 @@ void EpisodeTracker::save(ArchiveWriter& writer) const {
   writer.put_doubles("recent_returns", std::vector<double>(returns_.begin(), returns_.end()));
   writer.put_doubles("recent_lengths", std::vector<double>(lengths_.begin(), lengths_.end()));
   writer.put_doubles("recent_successes", std::vector<double>(successes_.begin(), successes_.end()));
+  writer.put_doubles("recent_levels", std::vector<double>(levels_.begin(), levels_.end()));
 }
 
 std::function<void()> EpisodeTracker::prepare_load(const ArchiveReader& reader) {
@@ -70,14 +82,19 @@ std::function<void()> EpisodeTracker::prepare_load(const ArchiveReader& reader) 
   const std::vector<double> successes = reader.contains("recent_successes")
                                             ? reader.get_doubles("recent_successes")
                                             : std::vector<double>{};
-  require(
-      returns.size() == lengths.size() && returns.size() <= kWindow && successes.size() <= kWindow,
-      "episode records are inconsistent", reader.name());
-  return [this, episodes, returns, lengths, successes] {
+  // ... and those written before curriculum levels were, none of these.
+  const std::vector<double> levels = reader.contains("recent_levels")
+                                         ? reader.get_doubles("recent_levels")
+                                         : std::vector<double>{};
+  require(returns.size() == lengths.size() && returns.size() <= kWindow &&
+              successes.size() <= kWindow && levels.size() <= kWindow,
+          "episode records are inconsistent", reader.name());
+  return [this, episodes, returns, lengths, successes, levels] {
     episodes_ = episodes;
     returns_.assign(returns.begin(), returns.end());
     lengths_.assign(lengths.begin(), lengths.end());
     successes_.assign(successes.begin(), successes.end());
+    levels_.assign(levels.begin(), levels.end());
   };
 }
 

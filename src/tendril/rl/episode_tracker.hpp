@@ -14,7 +14,9 @@ namespace tendril::rl {
 // Returns and lengths of the last 100 finished episodes (SB3's ep_info_buffer), read from the
 // EpisodeStatistics wrapper's info of each finished env, and the count of finished episodes;
 // and, for environments that report "is_success" on an episode's last step, whether each of the
-// last 100 such episodes succeeded (SB3's ep_success_buffer, logged as rollout/success_rate).
+// last 100 such episodes succeeded (SB3's ep_success_buffer, logged as rollout/success_rate);
+// and, for environments under a curriculum ("curriculum_level" in info), the level of each of the
+// last 100 episodes (logged as rollout/curriculum_level, their mean).
 class EpisodeTracker {
  public:
   void record(const envs::VecStep& step);
@@ -24,6 +26,8 @@ class EpisodeTracker {
   double mean_length() const;
   // Fraction of the last 100 episodes that reported is_success = 1; unset until one reported.
   std::optional<double> success_rate() const;
+  // Mean curriculum level of the last 100 episodes that reported one; unset until one did.
+  std::optional<double> curriculum_level() const;
   // Oldest first.
   const std::deque<double>& recent_returns() const { return returns_; }
   // Fills the episode fields of `progress`.
@@ -35,7 +39,7 @@ class EpisodeTracker {
 
  private:
   int64_t episodes_ = 0;
-  std::deque<double> returns_, lengths_, successes_;
+  std::deque<double> returns_, lengths_, successes_, levels_;
 };
 
 }  // namespace tendril::rl

@@ -24,6 +24,8 @@ struct Progress {
   int64_t episodes = 0;  // finished episodes so far
   // Over the last 100 episodes that reported "is_success" (unset if the env reports none).
   std::optional<double> success_rate;
+  // Mean curriculum level of the last 100 episodes (unset if the env has no curriculum).
+  std::optional<double> curriculum_level;
   TrainStats train;
   // Wall time of this iteration: stepping the environments, policy inference, the updates.
   double env_seconds = 0.0, inference_seconds = 0.0, update_seconds = 0.0;

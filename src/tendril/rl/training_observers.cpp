@@ -76,6 +76,7 @@ bool ScalarLogObserver::on_iteration(const Progress& p) {
     log_.record("rollout/ep_len_mean", p.episode_length_mean);
   }
   if (p.success_rate) log_.record("rollout/success_rate", *p.success_rate);
+  if (p.curriculum_level) log_.record("rollout/curriculum_level", *p.curriculum_level);
   for (const auto& [name, value] : p.train) log_.record(name, value);
   log_.dump(p.timesteps);
   return true;
