@@ -179,16 +179,11 @@ int open_loop(const Config& config) {
   const std::filesystem::path output = new_output(config, "output");
   config.reject_unknown();
 
-  // The columns of a model's open-loop rollout (`tendril dynamics eval --open-loop`).
-  const data::TableSchema schema{
-      "tendril.sma_limb.open_loop v1",
-      {{"time_s", 3, {}, "since the input began, s"},
-       {"theta_x", 6, {}, "filtered bend towards +x, deg (as in prepared data sets)"},
-       {"theta_y", 6, {}, "filtered bend towards +y, deg"},
-       {"omega_x", 6, {}, "filtered bend rate towards +x, deg/s"},
-       {"omega_y", 6, {}, "filtered bend rate towards +y, deg/s"},
-       {"u_x", 0, {}, "x throttle sent from this reading to the next (the rounded input)"},
-       {"u_y", 0, {}, "y throttle sent"}}};
+  // A prepared data set's columns up to the throttles (time since the input began): the columns
+  // of a model's open-loop rollout (`tendril dynamics eval --open-loop`).
+  data::TableSchema schema = data::prepared_schema();
+  schema.format = "tendril.sma_limb.open_loop v1";
+  schema.columns.resize(data::kUy + 1);
   std::filesystem::create_directories(output);
   const Stopwatch stopwatch;
   double robot_time = 0.0;
@@ -200,7 +195,7 @@ int open_loop(const Config& config) {
     table.set("seed", std::to_string(seed));
     table.set("ema_alpha", number(ema_alpha));
     table.set("config", config.source());
-    table.values.resize(static_cast<Eigen::Index>(log.size()), 7);
+    table.values.resize(static_cast<Eigen::Index>(log.size()), data::kUy + 1);
     data::StateFilter filter(ema_alpha);
     for (std::size_t k = 0; k < log.size(); ++k) {
       const Eigen::Vector4d state = filter.update(log.time_s[k], log.angles_deg[k]);

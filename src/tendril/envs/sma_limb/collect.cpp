@@ -56,10 +56,7 @@ LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& setting
     for (int k = 0; time < settings.duration_s && (k < readings || time < cool_until); ++k) {
       action << static_cast<float>(throttles.x()), static_cast<float>(throttles.y());
       const Step step = env.step(action);
-      log.time_s.push_back(time);
-      log.angles_deg.push_back(angles);
-      log.throttles.push_back(throttles);
-      log.pwm.push_back(pwm_of(step.info));
+      log.add(time, angles, throttles, pwm_of(step.info));
       if (step.terminated) throw Error("the robot failed during collection", "collect");
       angles = step.observation.head<2>().cast<double>();
       time = info_value(step.info, "time_s");
@@ -79,18 +76,12 @@ LimbLog drive_open_loop(Env& env, const ThrottleSequence& inputs, uint64_t seed)
     const Eigen::Vector2i throttles = inputs.row(k).array().round().cast<int>().transpose();
     action << static_cast<float>(throttles.x()), static_cast<float>(throttles.y());
     const Step step = env.step(action);
-    log.time_s.push_back(time);
-    log.angles_deg.push_back(observation.head<2>().cast<double>());
-    log.throttles.push_back(throttles);
-    log.pwm.push_back(pwm_of(step.info));
+    log.add(time, observation.head<2>().cast<double>(), throttles, pwm_of(step.info));
     if (step.terminated) throw Error("the robot failed during the open-loop drive", "collect");
     observation = step.observation;
     time = info_value(step.info, "time_s");
   }
-  log.time_s.push_back(time);
-  log.angles_deg.push_back(observation.head<2>().cast<double>());
-  log.throttles.push_back(Eigen::Vector2i::Zero());
-  log.pwm.push_back({});
+  log.add(time, observation.head<2>().cast<double>(), Eigen::Vector2i::Zero(), {});
   return log;
 }
 

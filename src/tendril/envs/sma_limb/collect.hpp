@@ -32,6 +32,13 @@ struct LimbLog {
   int64_t cutoffs = 0;  // readings past the cut-off
 
   std::size_t size() const { return time_s.size(); }
+  void add(double time, const Eigen::Vector2d& angles, const Eigen::Vector2i& throttle_pair,
+           const std::array<int, 4>& coil_pwm) {
+    time_s.push_back(time);
+    angles_deg.push_back(angles);
+    throttles.push_back(throttle_pair);
+    pwm.push_back(coil_pwm);
+  }
 };
 
 // Resets `env` (an SmaLimb/Robot-v0 or anything with its observation and info keys) with `seed`
