@@ -55,7 +55,8 @@ TEST(Boac, TheCoachRaisesTheAccuracyProfileByProfileUntilTheGoal) {
     EXPECT_EQ(result.trials[n].phase, "oracle");
     EXPECT_NEAR(result.trials[n].final_goal_distance, kBias.norm() / 1.5, 0.5);
   }
-  // Then coaching trials whose profiles only ever tighten: 15 → 10 → 5 mm, each reached.
+  // Then coaching trials whose profiles only ever tighten: 15 → 10 → 5 mm, until a trial ends
+  // at the goal.
   const std::vector<std::string> order{"coach 15 mm", "coach 10 mm", "coach 5 mm"};
   std::size_t profile = 0;
   for (std::size_t i = 4; i < result.trials.size(); ++i) {
@@ -63,7 +64,6 @@ TEST(Boac, TheCoachRaisesTheAccuracyProfileByProfileUntilTheGoal) {
     ASSERT_LT(profile, order.size()) << "trial " << i << " is " << result.trials[i].phase;
   }
   EXPECT_EQ(result.trials[4].phase, "coach 15 mm");
-  EXPECT_EQ(result.trials.back().phase, "coach 5 mm");
   // A profile is left on its local flag (its last trial ended within 5 mm of the coach path's
   // end) or when its 6 trials are spent.
   int in_profile = 0;

@@ -176,6 +176,12 @@ GprcaTrialsOptions read_gprca_trials_options(const Config& config, GprcaTrialsOp
 
 BoacOptions read_boac_options(const Config& config, BoacOptions defaults) {
   BoacOptions options = defaults;
+  if (config.has("oracle")) {
+    const auto name = config.get<std::string>("oracle");
+    check(name == "closed_loop" || name == "open_loop", config, "oracle",
+          "must be closed_loop or open_loop");
+    options.oracle_open_loop = name == "open_loop";
+  }
   options.oracle_trials = read_count(config, "oracle_trials", options.oracle_trials, 1);
   options.best_trials = read_count(config, "best_trials", options.best_trials, 1);
   check(options.best_trials <= options.oracle_trials, config, "best_trials",

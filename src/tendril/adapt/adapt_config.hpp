@@ -24,7 +24,8 @@ namespace tendril::adapt {
 //              trials_after_goal, search_between_trials, input (command | delta),
 //              retrain_every, search_every, search_below, sharing (per_output | shared), seed,
 //              gp (a gp mapping)
-//   boac:      oracle_trials, best_trials, oracle_steps, coach_episodes, profiles_mm,
+//   boac:      oracle (closed_loop | open_loop), oracle_trials, best_trials, oracle_steps,
+//   coach_episodes, profiles_mm,
 //              local_flag_mm, batch, hold_steps, max_trials_per_profile, max_trials,
 //              offset_bound_mm, collision_penalty_mm, sharing, time_weight_mm_per_step,
 //              min_visit_fraction, kmeans, student (a gp mapping), bayes_opt (without bounds)

@@ -42,13 +42,18 @@ std::string profile_name(double radius) {
 }
 
 // Lines 1–3: the oracle on the robot; the N best episodes by reduced-accuracy return train π_0.
-void seed_student(ReachingRobot& robot, const rl::Policy& oracle, const BoacOptions& options,
+void seed_student(ReachingRobot& robot, const rl::Policy& oracle,
+                  const std::vector<OracleEpisode>& in_model, const BoacOptions& options,
                   uint64_t seed, StudentPolicy& student, AdaptationResult& result) {
   std::vector<OracleEpisode> episodes;
   std::vector<double> returns;
   for (int n = 0; n < options.oracle_trials; ++n) {
-    episodes.push_back(run_oracle(robot, oracle, options.oracle_steps,
-                                  n == 0 ? std::optional<uint64_t>(seed) : std::nullopt));
+    const std::optional<uint64_t> trial_seed =
+        n == 0 ? std::optional<uint64_t>(seed) : std::nullopt;
+    episodes.push_back(
+        options.oracle_open_loop
+            ? replay_commands(robot, in_model[n % in_model.size()].commands, trial_seed)
+            : run_oracle(robot, oracle, options.oracle_steps, trial_seed));
     returns.push_back(reduced_accuracy_return(episodes.back().statuses, options.profiles.front()));
     const std::size_t first = result.steps.size();
     log_oracle_episode(episodes.back(), n + 1, result.steps);
@@ -68,15 +73,14 @@ void seed_student(ReachingRobot& robot, const rl::Policy& oracle, const BoacOpti
 }
 
 // D_d: π_θ's deterministic episodes in the learned model.
-std::vector<Eigen::MatrixXd> coach_trajectories(ReachingRobot& model, const rl::Policy& oracle,
-                                                const BoacOptions& options, uint64_t seed) {
-  std::vector<Eigen::MatrixXd> trajectories;
+std::vector<OracleEpisode> model_episodes(ReachingRobot& model, const rl::Policy& oracle,
+                                          const BoacOptions& options, uint64_t seed) {
+  std::vector<OracleEpisode> episodes;
   for (int e = 0; e < options.coach_episodes; ++e) {
-    trajectories.push_back(run_oracle(model, oracle, options.oracle_steps,
-                                      e == 0 ? std::optional<uint64_t>(seed) : std::nullopt)
-                               .states);
+    episodes.push_back(run_oracle(model, oracle, options.oracle_steps,
+                                  e == 0 ? std::optional<uint64_t>(seed) : std::nullopt));
   }
-  return trajectories;
+  return episodes;
 }
 
 }  // namespace
@@ -104,10 +108,11 @@ AdaptationResult run_boac(ReachingRobot& robot, ReachingRobot& model, const rl::
   Rng rng(seed, 0xB0AC);
   AdaptationResult result;
   StudentPolicy student(robot.state_dim(), robot.command_dim(), options.student, options.sharing);
-  seed_student(robot, oracle, options, seed, student, result);
+  const std::vector<OracleEpisode> in_model = model_episodes(model, oracle, options, seed);
+  seed_student(robot, oracle, in_model, options, seed, student, result);
   student.fit_hyperparameters(rng);
-  const std::vector<Eigen::MatrixXd> demonstrations =
-      coach_trajectories(model, oracle, options, seed);
+  std::vector<Eigen::MatrixXd> demonstrations;
+  for (const OracleEpisode& episode : in_model) demonstrations.push_back(episode.states);
 
   int trial = 0;  // coaching trials so far
   for (std::size_t profile = 0; profile < options.profiles.size() && !result.goal_flag; ++profile) {
@@ -133,6 +138,16 @@ AdaptationResult run_boac(ReachingRobot& robot, ReachingRobot& model, const rl::
       targets.rightCols<3>().rowwise() += offset.transpose();
       const int length = static_cast<int>(path.rows()) - 1 + options.hold_steps;
       Eigen::VectorXd state = robot.reset(std::nullopt);
+      // The coach's path starts where the model's episodes did; the robot's rest lies elsewhere
+      // (its drift). The path is moved onto the robot's start, the shift fading linearly to
+      // nothing at the path's end, so the first targets are reachable steps.
+      const Eigen::RowVectorXd start_shift = state.transpose() - path.row(0);
+      for (Eigen::Index row = 0; row < targets.rows(); ++row) {
+        const double fade =
+            1.0 - static_cast<double>(row) /
+                      static_cast<double>(std::max<Eigen::Index>(1, targets.rows() - 1));
+        targets.row(row) += fade * start_shift;
+      }
       std::vector<Eigen::VectorXd> pending_states, pending_next, pending_commands;
       const std::size_t first = result.steps.size();
       double squared_tracking = 0.0;
@@ -183,8 +198,8 @@ AdaptationResult run_boac(ReachingRobot& robot, ReachingRobot& model, const rl::
       result.trials.push_back(summary);
       const bool local_flag =
           !summary.collision && summary.coach_end_distance <= options.local_flag;
-      if (last_profile && !summary.collision &&
-          summary.final_goal_distance <= robot.success_distance()) {
+      // G_f: this trial ended at the goal, whichever profile coached it.
+      if (!summary.collision && summary.final_goal_distance <= robot.success_distance()) {
         result.goal_flag = true;
         result.trials_to_goal = trial;
         break;

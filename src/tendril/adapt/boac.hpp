@@ -20,8 +20,12 @@ GpOptions default_student_options();
 BayesOptOptions default_offset_optimizer_options();
 
 struct BoacOptions {
-  // d_πθ: π_θ closed loop on the robot, `oracle_trials` episodes of at most `oracle_steps`; the
+  // d_πθ: π_θ on the robot, `oracle_trials` episodes of at most `oracle_steps`; the
   // `best_trials` (N = 7, §V-C1) with the highest reduced-accuracy return seed the student.
+  // Closed loop (the policy fed the robot's states), or open loop: the commands of π_θ's
+  // episodes in the model (the coach's, in turn) replayed on the robot — for a robot on which
+  // the closed-loop policy collides before it gets near the goal.
+  bool oracle_open_loop = false;
   int oracle_trials = 10;
   int best_trials = 7;
   int oracle_steps = 150;
@@ -51,14 +55,15 @@ struct BoacOptions {
 // BOAC, Bayesian-optimisation-assisted coaching (seed 002 §IV-B, Alg. 1), on a robot: the
 // oracle π_θ's best episodes on the robot train the GP student π_0 (lines 1–3); for each
 // coaching profile (line 5) the coach's k-means path over π_θ's deterministic episodes in the
-// learned model (`model`, a ReachingRobot over it) sets the targets x^d; coaching trials
+// learned model (`model`, a ReachingRobot over it) sets the targets x^d (moved onto each trial's
+// start, the shift fading to nothing at the path's end); coaching trials
 // (lines 6–7) run the student on the robot toward them, x_{t+1} ← robot(π_i(x_t, x^d)), adding
 // each transition reformed as in (3) and retraining every n_B steps (lines 8–12), with Bayesian
 // optimisation proposing each trial's target offset; L_f moves to the next profile, and G_f (a
-// trial of the last profile ending within the robot's success distance of the goal) ends the
-// run. The robot's first oracle trial starts from a reset seeded with `seed`, the model's first
-// coach episode too; later ones continue the streams. Logged trials are numbered from 1: the
-// oracle's first, then the coaching trials (trials_to_goal counts coaching trials only).
+// trial ending within the robot's success distance of the goal, in any profile) ends the run. The
+// robot's first oracle trial starts from a reset seeded with `seed`, the model's first coach
+// episode too; later ones continue the streams. Logged trials are numbered from 1: the oracle's
+// first, then the coaching trials (trials_to_goal counts coaching trials only).
 AdaptationResult run_boac(ReachingRobot& robot, ReachingRobot& model, const rl::Policy& oracle,
                           const BoacOptions& options, uint64_t seed);
 

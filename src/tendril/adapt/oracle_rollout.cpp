@@ -4,15 +4,17 @@
 
 namespace tendril::adapt {
 
-OracleEpisode run_oracle(ReachingRobot& robot, const rl::Policy& policy, int max_steps,
-                         std::optional<uint64_t> seed) {
-  require(max_steps >= 1, "max_steps must be at least 1", "adapt::run_oracle");
-  Rng unused(0);  // a deterministic policy draws nothing
+namespace {
+
+// Steps `robot` from a reset with the commands `next_command` gives until it returns none, the
+// goal, a collision or `max_steps`.
+template <typename NextCommand>
+OracleEpisode record(ReachingRobot& robot, int max_steps, std::optional<uint64_t> seed,
+                     NextCommand next_command) {
   std::vector<Eigen::VectorXd> states{robot.reset(seed)}, commands;
   OracleEpisode episode;
   for (int t = 0; t < max_steps; ++t) {
-    const Action action = policy.act(robot.observation_of(states.back()), true, unused);
-    states.push_back(robot.step(robot.command_after(action)));
+    states.push_back(robot.step(next_command(t, states.back())));
     commands.push_back(robot.command());
     episode.statuses.push_back(robot.status());
     if (robot.status().success || robot.status().collision) break;
@@ -24,6 +26,27 @@ OracleEpisode run_oracle(ReachingRobot& robot, const rl::Policy& policy, int max
     episode.commands.row(t) = commands[t].transpose();
   }
   return episode;
+}
+
+}  // namespace
+
+OracleEpisode run_oracle(ReachingRobot& robot, const rl::Policy& policy, int max_steps,
+                         std::optional<uint64_t> seed) {
+  require(max_steps >= 1, "max_steps must be at least 1", "adapt::run_oracle");
+  Rng unused(0);  // a deterministic policy draws nothing
+  return record(robot, max_steps, seed, [&](int, const Eigen::VectorXd& state) {
+    return robot.command_after(policy.act(robot.observation_of(state), true, unused));
+  });
+}
+
+OracleEpisode replay_commands(ReachingRobot& robot, const Eigen::MatrixXd& commands,
+                              std::optional<uint64_t> seed) {
+  require(commands.rows() >= 1 && commands.cols() == robot.command_dim(),
+          "replay needs at least one command of the robot's size", "adapt::replay_commands");
+  return record(robot, static_cast<int>(commands.rows()), seed,
+                [&](int t, const Eigen::VectorXd&) -> Eigen::VectorXd {
+                  return commands.row(t).transpose();
+                });
 }
 
 double reduced_accuracy_return(const std::vector<ReachStatus>& statuses, double radius) {

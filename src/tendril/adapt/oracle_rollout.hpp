@@ -22,6 +22,11 @@ struct OracleEpisode {
 OracleEpisode run_oracle(ReachingRobot& robot, const rl::Policy& policy, int max_steps,
                          std::optional<uint64_t> seed);
 
+// Replays `commands` (one row per step, as OracleEpisode::commands) open loop on `robot` from a
+// reset (seeded when `seed` is given), stopping early at the goal or a collision.
+OracleEpisode replay_commands(ReachingRobot& robot, const Eigen::MatrixXd& commands,
+                              std::optional<uint64_t> seed);
+
 // R(n) of an episode with the goal's accuracy reduced to `radius` (seed 002 §IV-B: "each
 // state-action pair has an associated reward … calculated … with reduced desired accuracy"):
 // eq. (2) summed over the steps, −2 per step, −100 outside the boundary, −5 (20 − O) for

@@ -98,10 +98,13 @@ Step ReachEnv::step(const Action& action) {
 
 Step ReachEnv::step_command(const ChamberVector& command) {
   require(command.allFinite(), "the command must be finite", setup_.id);
-  const ChamberVector change = command - command_;
-  const ChamberVector clipped = change.cwiseMax(-setup_.rate_limit).cwiseMin(setup_.rate_limit);
-  const bool rate_limited = (clipped - change).cwiseAbs().maxCoeff() > 1e-9;
-  return advance((command_ + clipped).cwiseMax(-1.0).cwiseMin(1.0), rate_limited);
+  // A change beyond the rate limit is scaled down as a whole, keeping its direction (clipping
+  // each chamber alone would turn it toward the diagonal).
+  ChamberVector change = command.cwiseMax(-1.0).cwiseMin(1.0) - command_;
+  const double largest = change.cwiseAbs().maxCoeff();
+  const bool rate_limited = largest > setup_.rate_limit;
+  if (rate_limited) change *= setup_.rate_limit / largest;
+  return advance((command_ + change).cwiseMax(-1.0).cwiseMin(1.0), rate_limited);
 }
 
 Observation ReachEnv::observation_of(const TipVector& tips_mm) const {

@@ -89,9 +89,10 @@ class ReachEnv : public Env {
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
   // A step with an absolute command (normalised, a ∈ [−1, 1]⁹) instead of a delta, for
-  // controllers that set pressures themselves (BOAC's student, seed 002 §IV-B): the change from
-  // the held command is clipped to the rate limit (the robot never gets a larger jump; info
-  // "rate_limited" = 1 when it was clipped) and the command to [−1, 1]. Then as step().
+  // controllers that set pressures themselves (BOAC's student, seed 002 §IV-B): the command is
+  // capped to [−1, 1], and a change from the held command beyond the rate limit is scaled down
+  // as a whole to it (the robot never gets a larger jump, in the direction asked; info
+  // "rate_limited" = 1 when it was scaled). Then as step().
   Step step_command(const ChamberVector& command);
   // The observation the policy would receive if the tips were `tips_mm` (with the distances
   // computed from them and the held command): GPRCA's compensated observation s = x + c.
