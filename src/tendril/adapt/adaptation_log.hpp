@@ -32,7 +32,8 @@ struct AdaptationTrial {
   double final_goal_distance = 0.0;
   double min_goal_distance = 0.0;
   double min_obstacle_distance = 0.0;
-  // BOAC: the RMS distance of the task point from the coach's targets, and the final one.
+  // BOAC: the RMS distance of the task point from the coach path's points (before the trial's
+  // offset and start shift), and its final distance from the path's end.
   double tracking_rms = 0.0;
   double coach_end_distance = 0.0;
   double max_update_ms = 0.0, median_update_ms = 0.0;  // per step
