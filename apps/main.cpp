@@ -61,6 +61,9 @@ commands:
   prepare-pneumatic --train FILE [--test FILE] --out FILE
       The pneumatic arm's recordings (collect-pneumatic) as a prepared data set for
       `dynamics fit`: time_s, tips x1 … z3 [mm], commanded pressures p1 … p9 [bar], split.
+  adapt <adapt.yaml> [--set key=value ...] [--out DIR]
+      Adapt trained policies online on the pneumatic arm (seed 002: BOAC or GPRCA) in every
+      goal x damage scenario x seed of the file; per-trial logs and summary.csv (Table II).
   record <run-dir> [--episodes N] [--best] [--out DIR] [--seed S] [--deterministic|--stochastic]
       Record episodes of a run's model (as eval picks it) into <run-dir>/episodes/ (or DIR):
       the scene of every step, actions, rewards, info (docs/episode_format.md).
@@ -139,6 +142,9 @@ int main(int argc, char** argv) {
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
     if (args[0] == "record") return tendril::apps::record_command(rest);
     if (args[0] == "rollout") return tendril::apps::rollout_command(rest);
+#endif
+#ifdef TENDRIL_WITH_ADAPT
+    if (args[0] == "adapt") return tendril::apps::adapt_command(rest);
 #endif
 #ifdef TENDRIL_WITH_SAFETY
     if (args[0] == "safety") return tendril::apps::safety_command(rest);
