@@ -51,25 +51,8 @@ std::string shape_text(const std::vector<int64_t>& shape) {
 
 std::string header_text(const ModelDescription& d,
                         const std::vector<std::pair<std::string, torch::Tensor>>& parameters) {
-  const ArchitectureSpec& a = d.architecture;
   std::ostringstream out;
-  out << "architecture: " << architecture_name(a.kind) << "\n"
-      << "state_dim: " << a.state_dim << "\n"
-      << "input_dim: " << a.input_dim << "\n"
-      << "hidden_size: " << a.hidden_size << "\n"
-      << "layers: " << a.layers << "\n"
-      << "heads: " << a.heads << "\n"
-      << "window: " << a.window << "\n"
-      << "output_bound: " << exact(a.output_bound) << "\n"
-      << "dropout: " << exact(a.dropout) << "\n"
-      << "normalization: " << normalization_name(a.normalization) << "\n"
-      << "state_names: " << list(d.state_names) << "\n"
-      << "input_names: " << list(d.input_names) << "\n"
-      << "sample_period_s: " << exact(d.sample_period) << "\n"
-      << "normalizer:\n"
-      << "  offset: " << list(d.normalizer.offset) << "\n"
-      << "  scale: " << list(d.normalizer.scale) << "\n"
-      << "parameters:\n";
+  out << description_yaml(d) << "parameters:\n";
   for (const auto& [name, tensor] : parameters) {
     out << "  - {name: " << name << ", shape: " << shape_text(tensor.sizes().vec()) << "}\n";
   }
@@ -132,6 +115,35 @@ ModelDescription read_description(const Config& header) {
 }
 
 }  // namespace
+
+std::string description_yaml(const ModelDescription& d) {
+  const ArchitectureSpec& a = d.architecture;
+  std::ostringstream out;
+  out << "architecture: " << architecture_name(a.kind) << "\n"
+      << "state_dim: " << a.state_dim << "\n"
+      << "input_dim: " << a.input_dim << "\n"
+      << "hidden_size: " << a.hidden_size << "\n"
+      << "layers: " << a.layers << "\n"
+      << "heads: " << a.heads << "\n"
+      << "window: " << a.window << "\n"
+      << "output_bound: " << exact(a.output_bound) << "\n"
+      << "dropout: " << exact(a.dropout) << "\n"
+      << "normalization: " << normalization_name(a.normalization) << "\n"
+      << "state_names: " << list(d.state_names) << "\n"
+      << "input_names: " << list(d.input_names) << "\n"
+      << "sample_period_s: " << exact(d.sample_period) << "\n"
+      << "normalizer:\n"
+      << "  offset: " << list(d.normalizer.offset) << "\n"
+      << "  scale: " << list(d.normalizer.scale) << "\n";
+  return out.str();
+}
+
+ModelDescription parse_description_yaml(const std::string& yaml, const std::string& where) {
+  const Config header = Config::parse(yaml, where);
+  ModelDescription description = read_description(header);
+  header.reject_unknown();
+  return description;
+}
 
 std::filesystem::path model_file_path(const std::filesystem::path& file_or_run) {
   return std::filesystem::is_directory(file_or_run) ? file_or_run / kModelFileName : file_or_run;

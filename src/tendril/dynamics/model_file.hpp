@@ -2,10 +2,12 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 
 namespace tendril::dynamics {
 
 class Model;
+struct ModelDescription;
 
 // A trained model in one self-describing file (a Python user can read it without tendril):
 //
@@ -29,6 +31,12 @@ void save_model(const Model& model, const std::filesystem::path& file, bool repl
 // unknown format version, or parameters that do not match the architecture the header
 // describes raise Error naming the file and what is wrong.
 std::unique_ptr<Model> load_model(const std::filesystem::path& file_or_run);
+
+// A model's description as the file's header writes it (without the parameter table), and
+// back; parse_description_yaml raises Error naming `where` on anything missing or invalid.
+// Files that carry a model's shape apart from its weights (a policy head) use them.
+std::string description_yaml(const ModelDescription& description);
+ModelDescription parse_description_yaml(const std::string& yaml, const std::string& where);
 
 // `path` itself, or `path`/model.tdm when `path` is a directory.
 std::filesystem::path model_file_path(const std::filesystem::path& file_or_run);
