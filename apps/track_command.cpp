@@ -130,8 +130,13 @@ int track_command(const std::vector<std::string>& args) {
     };
     const control::TrackingRun run =
         control::track(limb_under_control, *controller, follower, max_steps, disturb);
-    std::printf("%-8s %8ld %9s %10.2f\n", pattern.c_str(), static_cast<long>(run.angles.cols()),
-                run.finished ? "yes" : "no", run.rmse_deg);
+    if (std::isnan(run.rmse_deg)) {
+      std::printf("%-8s %8ld %9s %s\n", pattern.c_str(), static_cast<long>(run.angles.cols()), "no",
+                  "the path's first point was never reached");
+    } else {
+      std::printf("%-8s %8ld %9s %10.2f\n", pattern.c_str(), static_cast<long>(run.angles.cols()),
+                  run.finished ? "yes" : "no", run.rmse_deg);
+    }
     if (!out.empty()) write_run(out, pattern, run, !first);
     first = false;
   }
