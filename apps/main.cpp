@@ -13,6 +13,7 @@
 #endif
 #ifdef TENDRIL_WITH_DYNAMICS
 #include "tendril/dynamics/env_model_loader.hpp"
+#include "tendril/dynamics/policy_heads.hpp"
 #endif
 
 namespace {
@@ -80,9 +81,10 @@ commands:
       replay open-loop throttles after cool-downs, compare exploration with babbling, or
       record the limb's response to the open-loop test inputs.
   track [circle|square|spiral|sml|all] [--limb stiff|soft] [--tip-mass KG] [--push N]
-        [--steps N] [--seed S] [--out FILE.csv]
-      Track reference paths in bend-angle space on the SMA limb twin with the PID baseline and
-      the 10° waypoint follower; print the tracking RMSE per path (--out: every step).
+        [--steps N] [--seed S] [--out FILE.csv] [--policy RUN [--best] [--stochastic]]
+      Track reference paths in bend-angle space on the SMA limb twin with the 10° waypoint
+      follower and the PID baseline, or a policy trained in SmaLimb/LearnedReach-v0 (its run
+      directory); print the tracking RMSE per path (--out: every step).
   dynamics fit <fit.yaml> [--set key=value ...] [--out DIR] [--quiet]
       Fit a learned dynamics model to a prepared data set; write the run directory (config,
       progress.csv, TensorBoard events, model.tdm, evaluation.csv).
@@ -121,6 +123,8 @@ int main(int argc, char** argv) {
 #ifdef TENDRIL_WITH_DYNAMICS
     // Environments around learned models open them from their `model` parameter.
     tendril::dynamics::install_model_loader();
+    // Policies with a learned-model head (seed 001 ch. 5) are trained and loaded.
+    tendril::dynamics::install_policy_heads();
 #endif
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
     if (args[0] == "plot") return tendril::apps::plot_command(rest);

@@ -39,26 +39,8 @@ std::string list(const Eigen::VectorXd& values) {
 }
 
 std::string header_text(const ModelFileContents& contents) {
-  const ModelDescription& d = contents.description;
-  const ArchitectureSpec& a = d.architecture;
   std::ostringstream out;
-  out << "architecture: " << architecture_name(a.kind) << "\n"
-      << "state_dim: " << a.state_dim << "\n"
-      << "input_dim: " << a.input_dim << "\n"
-      << "hidden_size: " << a.hidden_size << "\n"
-      << "layers: " << a.layers << "\n"
-      << "heads: " << a.heads << "\n"
-      << "window: " << a.window << "\n"
-      << "output_bound: " << exact(a.output_bound) << "\n"
-      << "dropout: " << exact(a.dropout) << "\n"
-      << "normalization: " << normalization_name(a.normalization) << "\n"
-      << "state_names: " << list(d.state_names) << "\n"
-      << "input_names: " << list(d.input_names) << "\n"
-      << "sample_period_s: " << exact(d.sample_period) << "\n"
-      << "normalizer:\n"
-      << "  offset: " << list(d.normalizer.offset) << "\n"
-      << "  scale: " << list(d.normalizer.scale) << "\n"
-      << "parameters:\n";
+  out << description_yaml(contents.description) << "parameters:\n";
   for (const StoredParameter& p : contents.parameters) {
     out << "  - {name: " << p.name << ", shape: " << shape_text(p.shape) << "}\n";
   }
@@ -128,6 +110,35 @@ int64_t element_count(const std::vector<int64_t>& shape, int64_t limit, const st
 }
 
 }  // namespace
+
+std::string description_yaml(const ModelDescription& d) {
+  const ArchitectureSpec& a = d.architecture;
+  std::ostringstream out;
+  out << "architecture: " << architecture_name(a.kind) << "\n"
+      << "state_dim: " << a.state_dim << "\n"
+      << "input_dim: " << a.input_dim << "\n"
+      << "hidden_size: " << a.hidden_size << "\n"
+      << "layers: " << a.layers << "\n"
+      << "heads: " << a.heads << "\n"
+      << "window: " << a.window << "\n"
+      << "output_bound: " << exact(a.output_bound) << "\n"
+      << "dropout: " << exact(a.dropout) << "\n"
+      << "normalization: " << normalization_name(a.normalization) << "\n"
+      << "state_names: " << list(d.state_names) << "\n"
+      << "input_names: " << list(d.input_names) << "\n"
+      << "sample_period_s: " << exact(d.sample_period) << "\n"
+      << "normalizer:\n"
+      << "  offset: " << list(d.normalizer.offset) << "\n"
+      << "  scale: " << list(d.normalizer.scale) << "\n";
+  return out.str();
+}
+
+ModelDescription parse_description_yaml(const std::string& yaml, const std::string& where) {
+  const Config header = Config::parse(yaml, where);
+  ModelDescription description = read_description(header);
+  header.reject_unknown();
+  return description;
+}
 
 std::string shape_text(const std::vector<int64_t>& shape) {
   std::string out = "[";

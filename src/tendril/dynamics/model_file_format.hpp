@@ -44,6 +44,12 @@ std::string encode_model_file(const ModelFileContents& contents);
 // and what is wrong.
 ModelFileContents decode_model_file(const std::string& bytes, const std::string& file);
 
+// A model's description as the file's header writes it (without the parameter table), and
+// back; parse_description_yaml raises Error naming `where` on anything missing or invalid.
+// Files that carry a model's shape apart from its weights (a policy head) use them.
+std::string description_yaml(const ModelDescription& description);
+ModelDescription parse_description_yaml(const std::string& yaml, const std::string& where);
+
 // The shape as text, "[32, 6]".
 std::string shape_text(const std::vector<int64_t>& shape);
 
