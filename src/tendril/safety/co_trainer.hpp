@@ -8,6 +8,7 @@
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/replay_buffer.hpp"
 #include "tendril/safety/constraint.hpp"
+#include "tendril/safety/filtered_vec_env.hpp"
 #include "tendril/safety/safety_reward.hpp"
 
 namespace tendril::safety {
@@ -39,6 +40,9 @@ class SafetyCoTrainer : public rl::Observer {
                   int64_t total_timesteps, uint64_t seed);
 
   void on_step(const rl::StepEvent& event) override;
+  // When the task agent acts through a FilteredVecEnv, the safety agent learns from what the
+  // environments executed rather than from the task agent's proposals. Borrows `env`.
+  void learn_executed_actions_of(const FilteredVecEnv& env) { filtered_env_ = &env; }
 
   const rl::ReplayBuffer& buffer() const { return buffer_; }
   int64_t stored_transitions() const { return stored_; }
@@ -53,6 +57,7 @@ class SafetyCoTrainer : public rl::Observer {
   Action agent_action(const Eigen::Ref<const Eigen::VectorXf>& action) const;
 
   rl::OffPolicyAlgorithm& agent_;
+  const FilteredVecEnv* filtered_env_ = nullptr;
   const Constraint& constraint_;
   SafetyReward reward_;
   CoTrainingSettings settings_;

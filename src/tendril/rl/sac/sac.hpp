@@ -7,6 +7,7 @@
 #include "tendril/rl/adam_checkpoint.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/q_critics.hpp"
+#include "tendril/rl/sac/actor_penalty.hpp"
 #include "tendril/rl/sac/sac_config.hpp"
 #include "tendril/rl/sac/squashed_gaussian_policy.hpp"
 
@@ -27,6 +28,9 @@ class Sac : public OffPolicyAlgorithm {
   double entropy_coefficient() const;
   // The twin Q critics (over [observation; action in [−1, 1]]).
   const QCritics& critics() const { return critics_; }
+  // Adds `penalty` to the actor's objective from the next update on (nullptr removes it);
+  // borrowed. Not part of checkpoints: whoever sets it restores it.
+  void set_actor_penalty(ActorPenalty* penalty) { actor_penalty_ = penalty; }
 
  protected:
   void explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
@@ -51,6 +55,7 @@ class Sac : public OffPolicyAlgorithm {
   nn::Adam actor_optimizer_;
   QCritics critics_;
   Eigen::VectorXf log_ent_coef_;  // one entry: log α
+  ActorPenalty* actor_penalty_ = nullptr;
   nn::Adam ent_coef_optimizer_;
 
   // Scratch of the update, kept to avoid allocations.
