@@ -27,7 +27,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: tendril safety train <experiment.yaml> [--out DIR] [--set key=value ...]\n"
     "       tendril safety eval <run> [--epsilon E[,E...]] [--episodes N] [--seed S]\n"
-    "                               [--task RUN|random] [--csv FILE]\n"
+    "                               [--task RUN|random] [--csv FILE] [--trajectory FILE]\n"
     "       tendril safety search <run> [--restarts N] [--step-size A] [--tolerance D]\n"
     "                                 [--seed S] [--csv FILE]\n"
     "       tendril safety map <run> --out FILE [--resolution N] [--extent X] [--axes I,J]\n"
@@ -64,14 +64,33 @@ void print_evaluation(const char* name, const safety::SafetyEvaluation& e) {
               e.mean_return, e.std_return, e.safety_rate, e.intervention_rate);
 }
 
+// Rows [episode, t, x..., u..., unsafe] as CSV; the observation's and action's entries, whose
+// sizes the rows do not carry, are named v0, v1, ...
+void write_trajectory(const std::string& file, const std::vector<std::vector<double>>& steps) {
+  std::ostringstream text;
+  text << "episode,t";
+  const std::size_t width = steps.empty() ? 3 : steps.front().size();
+  for (std::size_t k = 2; k + 1 < width; ++k) text << ",v" << (k - 2);
+  text << ",unsafe\n";
+  for (const auto& row : steps) {
+    for (std::size_t k = 0; k < row.size(); ++k) text << (k ? "," : "") << row[k];
+    text << "\n";
+  }
+  write_file_atomically(file, text.str(), "--trajectory");
+}
+
 int evaluate(const std::filesystem::path& run, const std::vector<double>& epsilons, int episodes,
-             uint64_t seed, const safety::TaskSource& task, const std::string& csv) {
+             uint64_t seed, const safety::TaskSource& task, const std::string& csv,
+             const std::string& trajectory_csv = "") {
   std::ostringstream rows;
   rows << "epsilon,unfiltered_return,unfiltered_return_std,unfiltered_safety_rate,"
           "filtered_return,filtered_return_std,filtered_safety_rate,intervention_rate\n";
   for (double epsilon : epsilons) {
+    std::vector<std::vector<double>> steps;
+    const bool record = !trajectory_csv.empty() && epsilon == epsilons.front();
     const safety::RunSafetyEvaluation result =
-        safety::evaluate_safety_run(run, epsilon, episodes, seed, task);
+        safety::evaluate_safety_run(run, epsilon, episodes, seed, task, record ? &steps : nullptr);
+    if (record) write_trajectory(trajectory_csv, steps);
     std::printf("%d episodes (reset seeds %llu, ...), epsilon_2 = %g\n", episodes,
                 static_cast<unsigned long long>(seed), epsilon);
     print_evaluation("task", result.unfiltered);
@@ -135,7 +154,7 @@ int train(const std::vector<std::string>& rest) {
 
 int eval(const std::vector<std::string>& rest) {
   const CommandLine line =
-      CommandLine::parse(rest, {"epsilon", "episodes", "seed", "task", "csv"}, {});
+      CommandLine::parse(rest, {"epsilon", "episodes", "seed", "task", "csv", "trajectory"}, {});
   require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
   const std::filesystem::path run = line.positional[0];
   // A co-training run brings its evaluation settings; any other run is judged unfiltered.
@@ -161,7 +180,7 @@ int eval(const std::vector<std::string>& rest) {
     task.run = value;
   }
   return evaluate(run, epsilons, episodes, line.unsigned_integer("seed", default_seed), task,
-                  line.value("csv", ""));
+                  line.value("csv", ""), line.value("trajectory", ""));
 }
 
 int search(const std::vector<std::string>& rest) {

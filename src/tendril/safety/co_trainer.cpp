@@ -50,7 +50,11 @@ void SafetyCoTrainer::on_step(const rl::StepEvent& event) {
       const bool next_unsafe = constraint_.unsafe(next);
       const double level = SafetyReward::level(constraint_.margin(x), constraint_.max_margin());
       const double r = reward_.reward(level, constraint_.time_step(x), unsafe, next_unsafe);
-      const bool terminated = unsafe || next_unsafe || event.step.terminated[i] != 0;
+      // The safety agent's episode ends on entering X_unsafe and at the maximum length T
+      // (§6.2.1): with t in the state its problem has a finite horizon, so the time limit is a
+      // termination, not a truncation to bootstrap through (V beyond T is 0, the bound
+      // (1 − γ^{T+1})/(1 − γ) of §6.2.2).
+      const bool terminated = unsafe || next_unsafe || event.step.done(i);
       const auto& actions =
           filtered_env_ != nullptr ? filtered_env_->executed_actions() : event.actions;
       store(x, agent_action(actions.row(i).transpose()), r, next, terminated);

@@ -28,6 +28,8 @@ struct CoTrainingSettings {
 // (an off-policy algorithm on the same spaces, never stepping the environments itself) from
 // it. The gate of each environment closes at the first transition into X_unsafe — stored, as
 // a termination — and opens again when its episode ends; the task agent's buffer is untouched.
+// An episode's last transition at the time limit is a termination too (the thesis' finite
+// horizon T, §6.2.1).
 //
 // Eq. (6.6), V_s(x) = −1/(1 − γ) on X_unsafe, is learnt as in the thesis' code (an MSE to
 // that target): each stored transition comes with `unsafe_samples_per_step` transitions from

@@ -15,7 +15,8 @@
 namespace tendril::safety {
 
 SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
-                                 int episodes, uint64_t seed) {
+                                 int episodes, uint64_t seed,
+                                 std::vector<std::vector<double>>* trajectory) {
   require(episodes >= 1, "at least one episode", "evaluate_safety");
   std::vector<double> returns;
   int safe = 0;
@@ -23,8 +24,16 @@ SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const T
     Observation observation = env.reset(seed + static_cast<uint64_t>(i));
     bool violated = constraint.unsafe(observation);
     double total = 0.0;
-    for (;;) {
-      const Step step = env.step(actor(observation));
+    for (int64_t t = 0;; ++t) {
+      const Action action = actor(observation);
+      const Step step = env.step(action);
+      if (trajectory != nullptr) {
+        std::vector<double> row{static_cast<double>(i), static_cast<double>(t)};
+        row.insert(row.end(), observation.data(), observation.data() + observation.size());
+        row.insert(row.end(), action.data(), action.data() + action.size());
+        row.push_back(constraint.unsafe(step.observation) ? 1.0 : 0.0);
+        trajectory->push_back(std::move(row));
+      }
       total += step.reward;
       observation = step.observation;
       violated = violated || constraint.unsafe(observation);
@@ -55,7 +64,8 @@ rl::Experiment task_experiment_of_run(const std::filesystem::path& run_directory
 }
 
 RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directory, double epsilon,
-                                        int episodes, uint64_t seed, const TaskSource& source) {
+                                        int episodes, uint64_t seed, const TaskSource& source,
+                                        std::vector<std::vector<double>>* trajectory) {
   const bool has_critic = std::filesystem::exists(run_directory / "safety.critic");
   const rl::Experiment run = task_experiment_of_run(run_directory);
   require(!run.env.normalize_observation,
@@ -88,13 +98,15 @@ RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directo
   RunSafetyEvaluation result;
   result.epsilon = epsilon;
   Rng task_rng(seed);
-  result.unfiltered = evaluate_safety(*env, *constraint, actor(task_rng), episodes, seed);
+  result.unfiltered = evaluate_safety(*env, *constraint, actor(task_rng), episodes, seed,
+                                      has_critic ? nullptr : trajectory);
   if (!has_critic) return result;
   const auto critic = load_safety_critic(run_directory / "safety.critic");
   Rng filtered_rng(seed);
   SafetyFilter filter(actor(filtered_rng), *critic, epsilon);
   result.filtered = evaluate_safety(
-      *env, *constraint, [&filter](const Observation& x) { return filter.act(x); }, episodes, seed);
+      *env, *constraint, [&filter](const Observation& x) { return filter.act(x); }, episodes, seed,
+      trajectory);
   result.filtered->intervention_rate = filter.intervention_rate();
   return result;
 }

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "tendril/core/env.hpp"
 #include "tendril/rl/experiment.hpp"
@@ -21,8 +22,11 @@ struct SafetyEvaluation {
   double safety_rate = 0.0;        // fraction of safe episodes
   double intervention_rate = 0.0;  // of the filter's decisions (0 without a filter)
 };
+// With `trajectory`, every step is appended as a row [episode, t, x..., u..., unsafe(x')], x the
+// observation acted on and u the action taken.
 SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
-                                 int episodes, uint64_t seed);
+                                 int episodes, uint64_t seed,
+                                 std::vector<std::vector<double>>* trajectory = nullptr);
 
 // The experiment a safety run was trained with, from its config.yaml: a co-training run
 // (`safety:` section, SafetyExperiment), a constrained baseline (`constrained:`,
@@ -45,7 +49,10 @@ struct RunSafetyEvaluation {
   SafetyEvaluation unfiltered;
   std::optional<SafetyEvaluation> filtered;
 };
+// With `trajectory`, the steps of the filtered evaluation (of the unfiltered one for a run
+// without a critic), as evaluate_safety records them.
 RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directory, double epsilon,
-                                        int episodes, uint64_t seed, const TaskSource& task = {});
+                                        int episodes, uint64_t seed, const TaskSource& task = {},
+                                        std::vector<std::vector<double>>* trajectory = nullptr);
 
 }  // namespace tendril::safety
