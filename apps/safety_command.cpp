@@ -1,21 +1,39 @@
-// `tendril safety`: train a task agent with a co-trained safety agent, and evaluate the run
-// with and without the safety filter (seed 001 ch. 6).
+// `tendril safety`: train a task agent with a co-trained safety agent or a constrained baseline,
+// evaluate runs with and without the safety filter, search ε₂ (Algorithm 3) and map the learned
+// safety value (seed 001 ch. 6).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <sstream>
 
 #include "command_line.hpp"
 #include "commands.hpp"
+#include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/rl/trainer.hpp"
+#include "tendril/safety/constrained_experiment.hpp"
+#include "tendril/safety/diamond_deployment.hpp"
+#include "tendril/safety/run_epsilon_search.hpp"
+#include "tendril/safety/safety_evaluation.hpp"
 #include "tendril/safety/safety_experiment.hpp"
+#include "tendril/safety/value_map.hpp"
 
 namespace tendril::apps {
 namespace {
+
+constexpr const char* kUsage =
+    "usage: tendril safety train <experiment.yaml> [--out DIR] [--set key=value ...]\n"
+    "       tendril safety eval <run> [--epsilon E[,E...]] [--episodes N] [--seed S]\n"
+    "                               [--task RUN|random] [--csv FILE] [--trajectory FILE]\n"
+    "       tendril safety search <run> [--restarts N] [--step-size A] [--tolerance D]\n"
+    "                                 [--seed S] [--csv FILE]\n"
+    "       tendril safety map <run> --out FILE [--resolution N] [--extent X] [--axes I,J]\n"
+    "                              [--fixed V,...] [--epsilon E[,E...]]\n"
+    "       tendril safety diamond <run> [--epsilon E[,E...]] [--trials N] [--seed S]\n"
+    "                                  [--limb stiff|soft] [--csv FILE] [--trajectories FILE]";
 
 std::filesystem::path new_run_directory(const std::string& output) {
   const std::time_t now = std::time(nullptr);
@@ -24,78 +42,267 @@ std::filesystem::path new_run_directory(const std::string& output) {
   return output + "-" + stamp;
 }
 
+double parse_number(const std::string& text, const std::string& flag) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  require(!text.empty() && end == text.c_str() + text.size() && std::isfinite(value),
+          "not a finite number: '" + text + "'", flag);
+  return value;
+}
+
+std::vector<double> parse_numbers(const std::string& text, const std::string& flag) {
+  std::vector<double> values;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) values.push_back(parse_number(item, flag));
+  require(!values.empty(), "expected one or more comma-separated numbers", flag);
+  return values;
+}
+
 void print_evaluation(const char* name, const safety::SafetyEvaluation& e) {
   std::printf("%-10s return %9.3f +/- %8.3f   safety rate %.3f   interventions %.3f\n", name,
               e.mean_return, e.std_return, e.safety_rate, e.intervention_rate);
 }
 
-int evaluate(const std::filesystem::path& run, double epsilon, int episodes, uint64_t seed) {
-  const safety::RunSafetyEvaluation result =
-      safety::evaluate_safety_run(run, epsilon, episodes, seed);
-  std::printf("%d episodes (reset seeds %llu, ...), epsilon_2 = %g\n", episodes,
-              static_cast<unsigned long long>(seed), epsilon);
-  print_evaluation("task", result.unfiltered);
-  if (result.filtered) print_evaluation("filtered", *result.filtered);
+// Rows [episode, t, x..., u..., unsafe] as CSV; the observation's and action's entries, whose
+// sizes the rows do not carry, are named v0, v1, ...
+void write_trajectory(const std::string& file, const std::vector<std::vector<double>>& steps) {
+  std::ostringstream text;
+  text << "episode,t";
+  const std::size_t width = steps.empty() ? 3 : steps.front().size();
+  for (std::size_t k = 2; k + 1 < width; ++k) text << ",v" << (k - 2);
+  text << ",unsafe\n";
+  for (const auto& row : steps) {
+    for (std::size_t k = 0; k < row.size(); ++k) text << (k ? "," : "") << row[k];
+    text << "\n";
+  }
+  write_file_atomically(file, text.str(), "--trajectory");
+}
+
+int evaluate(const std::filesystem::path& run, const std::vector<double>& epsilons, int episodes,
+             uint64_t seed, const safety::TaskSource& task, const std::string& csv,
+             const std::string& trajectory_csv = "") {
+  std::ostringstream rows;
+  rows << "epsilon,unfiltered_return,unfiltered_return_std,unfiltered_safety_rate,"
+          "filtered_return,filtered_return_std,filtered_safety_rate,intervention_rate\n";
+  for (double epsilon : epsilons) {
+    std::vector<std::vector<double>> steps;
+    const bool record = !trajectory_csv.empty() && epsilon == epsilons.front();
+    const safety::RunSafetyEvaluation result =
+        safety::evaluate_safety_run(run, epsilon, episodes, seed, task, record ? &steps : nullptr);
+    if (record) write_trajectory(trajectory_csv, steps);
+    std::printf("%d episodes (reset seeds %llu, ...), epsilon_2 = %g\n", episodes,
+                static_cast<unsigned long long>(seed), epsilon);
+    print_evaluation("task", result.unfiltered);
+    if (result.filtered) print_evaluation("filtered", *result.filtered);
+    const auto& u = result.unfiltered;
+    rows << epsilon << "," << u.mean_return << "," << u.std_return << "," << u.safety_rate;
+    if (result.filtered) {
+      const auto& f = *result.filtered;
+      rows << "," << f.mean_return << "," << f.std_return << "," << f.safety_rate << ","
+           << f.intervention_rate << "\n";
+    } else {
+      rows << ",,,,\n";
+    }
+  }
+  if (!csv.empty()) write_file_atomically(csv, rows.str(), csv);
   return 0;
 }
 
-double parse_epsilon(const CommandLine& line, double fallback) {
-  if (!line.has("epsilon")) return fallback;
-  const std::string text = line.value("epsilon", "");
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  require(!text.empty() && end == text.c_str() + text.size() && std::isfinite(value),
-          "not a finite number: '" + text + "'", "--epsilon");
-  return value;
+std::filesystem::path run_directory_of(const CommandLine& line, const rl::Experiment& task) {
+  return line.has("out") ? std::filesystem::path(line.value("out", ""))
+                         : new_run_directory(task.output);
+}
+
+int train_baseline(const CommandLine& line, const Config& config) {
+  const safety::ConstrainedExperiment baseline = safety::ConstrainedExperiment::from_config(config);
+  const rl::Experiment& task = baseline.task;
+  const std::filesystem::path run = run_directory_of(line, task);
+  std::printf("training %s with the %s baseline on %s for %lld steps, seed %llu -> %s\n",
+              task.algorithm.c_str(), baseline.method.c_str(), task.env.id.c_str(),
+              static_cast<long long>(task.n_timesteps), static_cast<unsigned long long>(task.seed),
+              run.string().c_str());
+  const auto result = safety::train_constrained(baseline, run);
+  std::printf("trained in %.1f s; multiplier %.4g, E[Q_risk] %.4f; model: %s/model.policy\n",
+              result.seconds, result.final_multiplier, result.final_cost_value,
+              run.string().c_str());
+  return evaluate(run, {0.0}, 100, task.seed, {}, "");
+}
+
+int train(const std::vector<std::string>& rest) {
+  const CommandLine line = CommandLine::parse(rest, {"out"}, {});
+  const Config config = line.load_config();
+  if (config.has("constrained")) return train_baseline(line, config);
+  const safety::SafetyExperiment co_trained = safety::SafetyExperiment::from_config(config);
+  const rl::Experiment& task = co_trained.task;
+  const std::filesystem::path run = run_directory_of(line, task);
+  std::printf("training %s with a %s safety agent on %s for %lld steps, seed %llu -> %s\n",
+              task.algorithm.c_str(), co_trained.safety_algorithm.c_str(), task.env.id.c_str(),
+              static_cast<long long>(task.n_timesteps), static_cast<unsigned long long>(task.seed),
+              run.string().c_str());
+  const safety::SafetyTrainResult result = safety::train_with_safety(co_trained, run);
+  std::printf(
+      "trained in %.1f s; safety buffer: %lld stored, %lld gated, %lld unsafe entries; "
+      "training filter interventions %.3f\n",
+      result.seconds, static_cast<long long>(result.stored_transitions),
+      static_cast<long long>(result.gated_transitions),
+      static_cast<long long>(result.unsafe_entries), result.training_intervention_rate);
+  std::printf("model: %s/model.policy  safety critic: %s/safety.critic\n", run.string().c_str(),
+              run.string().c_str());
+  return evaluate(run, {co_trained.eval_epsilon}, co_trained.eval_episodes, task.seed, {}, "");
+}
+
+int eval(const std::vector<std::string>& rest) {
+  const CommandLine line =
+      CommandLine::parse(rest, {"epsilon", "episodes", "seed", "task", "csv", "trajectory"}, {});
+  require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
+  const std::filesystem::path run = line.positional[0];
+  // A co-training run brings its evaluation settings; any other run is judged unfiltered.
+  int default_episodes = 100;
+  double default_epsilon = 0.0;
+  const uint64_t default_seed = safety::task_experiment_of_run(run).seed;
+  const Config config = Config::load_file(run / "config.yaml");
+  if (config.has("safety")) {
+    const safety::SafetyExperiment experiment = safety::SafetyExperiment::from_config(config);
+    default_episodes = experiment.eval_episodes;
+    default_epsilon = experiment.eval_epsilon;
+  }
+  const int episodes = static_cast<int>(
+      line.integer("episodes", default_episodes, 1, std::numeric_limits<int>::max()));
+  const std::vector<double> epsilons = line.has("epsilon")
+                                           ? parse_numbers(line.value("epsilon", ""), "--epsilon")
+                                           : std::vector<double>{default_epsilon};
+  safety::TaskSource task;
+  if (line.has("task")) {
+    const std::string value = line.value("task", "");
+    task.kind =
+        value == "random" ? safety::TaskSource::Kind::kRandom : safety::TaskSource::Kind::kRun;
+    task.run = value;
+  }
+  return evaluate(run, epsilons, episodes, line.unsigned_integer("seed", default_seed), task,
+                  line.value("csv", ""), line.value("trajectory", ""));
+}
+
+int search(const std::vector<std::string>& rest) {
+  const CommandLine line =
+      CommandLine::parse(rest, {"restarts", "step-size", "tolerance", "seed", "csv"}, {});
+  require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
+  const std::filesystem::path run = line.positional[0];
+  safety::EpsilonSearchOptions options;
+  options.restarts = static_cast<int>(line.integer("restarts", options.restarts, 1, 100000));
+  if (line.has("step-size")) {
+    options.step_size = parse_number(line.value("step-size", ""), "--step-size");
+  }
+  if (line.has("tolerance")) {
+    options.tolerance = parse_number(line.value("tolerance", ""), "--tolerance");
+  }
+  const uint64_t seed = line.unsigned_integer("seed", 0);
+  const safety::RunEpsilonSearch search = safety::search_epsilon_of_run(run, options, seed);
+  std::ostringstream rows;
+  rows << "restart,epsilon,iterations,converged";
+  for (const std::string& name : search.state_names) rows << ",start_" << name;
+  for (const std::string& name : search.state_names) rows << ",final_" << name;
+  rows << "\n";
+  for (std::size_t k = 0; k < search.result.runs.size(); ++k) {
+    const safety::EpsilonSearchRun& r = search.result.runs[k];
+    std::printf("restart %2zu: epsilon_2 %10.4f after %3zu iterations%s\n", k, r.epsilon,
+                r.trace.size(), r.converged ? "" : " (not converged)");
+    rows << k << "," << r.epsilon << "," << r.trace.size() << "," << (r.converged ? 1 : 0);
+    const Eigen::VectorXd start = r.trace.empty() ? Eigen::VectorXd() : r.trace.front().state;
+    const Eigen::VectorXd last = r.trace.empty() ? Eigen::VectorXd() : r.trace.back().state;
+    for (Eigen::Index i = 0; i < search.state_scales.size(); ++i) {
+      rows << "," << (start.size() ? start[i] * search.state_scales[i] : NAN);
+    }
+    for (Eigen::Index i = 0; i < search.state_scales.size(); ++i) {
+      rows << "," << (last.size() ? last[i] * search.state_scales[i] : NAN);
+    }
+    rows << "\n";
+  }
+  std::printf("epsilon_2 = %.4f (the largest of %zu restarts, Algorithm 3)\n",
+              search.result.epsilon, search.result.runs.size());
+  const std::string csv = line.value("csv", "");
+  if (!csv.empty()) write_file_atomically(csv, rows.str(), csv);
+  return 0;
+}
+
+int map(const std::vector<std::string>& rest) {
+  const CommandLine line =
+      CommandLine::parse(rest, {"out", "resolution", "extent", "axes", "fixed", "epsilon"}, {});
+  require(line.positional.size() == 1 && line.overrides.empty() && line.has("out"), kUsage,
+          "command line");
+  safety::ValueMapOptions options;
+  options.resolution = static_cast<int>(line.integer("resolution", options.resolution, 2, 2001));
+  if (line.has("extent")) options.extent = parse_number(line.value("extent", ""), "--extent");
+  if (line.has("axes")) {
+    const std::vector<double> axes = parse_numbers(line.value("axes", ""), "--axes");
+    require(axes.size() == 2, "expected two coordinate indices I,J", "--axes");
+    options.x_axis = static_cast<int>(axes[0]);
+    options.y_axis = static_cast<int>(axes[1]);
+  }
+  if (line.has("fixed")) {
+    const std::vector<double> fixed = parse_numbers(line.value("fixed", ""), "--fixed");
+    options.fixed =
+        Eigen::Map<const Eigen::VectorXd>(fixed.data(), static_cast<Eigen::Index>(fixed.size()));
+  }
+  const safety::ValueMap map = safety::value_map_of_run(line.positional[0], options);
+  map.write_csv(line.value("out", ""));
+  std::printf("%lld points -> %s\n", static_cast<long long>(map.rows.rows()),
+              line.value("out", "").c_str());
+  if (map.has_analytic_set && line.has("epsilon")) {
+    for (double epsilon : parse_numbers(line.value("epsilon", ""), "--epsilon")) {
+      std::printf("epsilon_2 %g: %.4f of the learned safe states lie outside the analytic set\n",
+                  epsilon, map.fraction_outside_analytic(epsilon));
+    }
+  }
+  return 0;
+}
+
+int diamond(const std::vector<std::string>& rest) {
+  const CommandLine line =
+      CommandLine::parse(rest, {"epsilon", "trials", "seed", "limb", "csv", "trajectories"}, {});
+  require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
+  safety::DiamondOptions options;
+  if (line.has("epsilon")) options.epsilons = parse_numbers(line.value("epsilon", ""), "--epsilon");
+  options.trials = static_cast<int>(line.integer("trials", options.trials, 1, 1000));
+  options.seed = line.unsigned_integer("seed", 0);
+  options.limb_params = Config::parse("limb: " + line.value("limb", "stiff"));
+  const std::vector<safety::DiamondTrial> trials = safety::run_diamond(line.positional[0], options);
+  std::ostringstream summary, paths;
+  summary << "epsilon,trial,time_to_violation_s,intervention_rate\n";
+  paths << "epsilon,trial,time_s,theta_x,theta_y,value,intervened,u_x,u_y\n";
+  for (const safety::DiamondTrial& t : trials) {
+    std::printf(
+        "epsilon_2 %6g trial %d: %s, interventions %.3f\n", t.epsilon, t.trial,
+        std::isnan(t.time_to_violation_s)
+            ? "no violation in the sequence"
+            : ("first violation at " + std::to_string(t.time_to_violation_s) + " s").c_str(),
+        t.intervention_rate);
+    summary << t.epsilon << "," << t.trial << "," << t.time_to_violation_s << ","
+            << t.intervention_rate << "\n";
+    for (Eigen::Index i = 0; i < t.trajectory.rows(); ++i) {
+      paths << t.epsilon << "," << t.trial;
+      for (Eigen::Index j = 0; j < t.trajectory.cols(); ++j) paths << "," << t.trajectory(i, j);
+      paths << "\n";
+    }
+  }
+  if (line.has("csv")) write_file_atomically(line.value("csv", ""), summary.str(), "--csv");
+  if (line.has("trajectories")) {
+    write_file_atomically(line.value("trajectories", ""), paths.str(), "--trajectories");
+  }
+  return 0;
 }
 
 }  // namespace
 
 int safety_command(const std::vector<std::string>& args) {
-  require(!args.empty() && (args[0] == "train" || args[0] == "eval"),
-          "usage: tendril safety train <experiment.yaml> | eval <run-dir>", "command line");
+  require(!args.empty(), kUsage, "command line");
   const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "train") {
-    const CommandLine line = CommandLine::parse(rest, {"out"}, {});
-    const safety::SafetyExperiment experiment =
-        safety::SafetyExperiment::from_config(line.load_config());
-    const std::filesystem::path run = line.has("out") ? std::filesystem::path(line.value("out", ""))
-                                                      : new_run_directory(experiment.task.output);
-    std::printf("training %s with a %s safety agent on %s for %lld steps, seed %llu -> %s\n",
-                experiment.task.algorithm.c_str(), experiment.safety_algorithm.c_str(),
-                experiment.task.env.id.c_str(), static_cast<long long>(experiment.task.n_timesteps),
-                static_cast<unsigned long long>(experiment.task.seed), run.string().c_str());
-    const safety::SafetyTrainResult result = safety::train_with_safety(experiment, run);
-    std::printf("trained in %.1f s; safety buffer: %lld stored, %lld gated, %lld unsafe entries\n",
-                result.seconds, static_cast<long long>(result.stored_transitions),
-                static_cast<long long>(result.gated_transitions),
-                static_cast<long long>(result.unsafe_entries));
-    std::printf("model: %s/model.policy  safety critic: %s/safety.critic\n", run.string().c_str(),
-                run.string().c_str());
-    return evaluate(run, experiment.eval_epsilon, experiment.eval_episodes, experiment.task.seed);
-  }
-  const CommandLine line = CommandLine::parse(rest, {"epsilon", "episodes", "seed"}, {});
-  require(line.positional.size() == 1 && line.overrides.empty(),
-          "usage: tendril safety eval <run-dir> [--epsilon E] [--episodes N] [--seed S]",
-          "command line");
-  const std::filesystem::path run = line.positional[0];
-  // A run of `safety train` brings its evaluation settings; any other run is judged unfiltered.
-  int default_episodes = 100;
-  double default_epsilon = 0.0;
-  uint64_t default_seed = 0;
-  if (std::filesystem::exists(run / "safety.critic")) {
-    const safety::SafetyExperiment experiment =
-        safety::SafetyExperiment::from_config(Config::load_file(run / "config.yaml"));
-    default_episodes = experiment.eval_episodes;
-    default_epsilon = experiment.eval_epsilon;
-    default_seed = experiment.task.seed;
-  } else {
-    default_seed = rl::load_run_experiment(run).seed;
-  }
-  const int episodes = static_cast<int>(
-      line.integer("episodes", default_episodes, 1, std::numeric_limits<int>::max()));
-  return evaluate(run, parse_epsilon(line, default_epsilon), episodes,
-                  line.unsigned_integer("seed", default_seed));
+  if (args[0] == "train") return train(rest);
+  if (args[0] == "eval") return eval(rest);
+  if (args[0] == "search") return search(rest);
+  if (args[0] == "map") return map(rest);
+  if (args[0] == "diamond") return diamond(rest);
+  throw Error(kUsage, "command line");
 }
 
 }  // namespace tendril::apps

@@ -33,6 +33,10 @@ def mark(text):
     return numbers_with_label(text, 2, "X,Y[:LABEL]")
 
 
+def circle(text):
+    return numbers_with_label(text, 3, "X,Y,R[:LABEL]")
+
+
 def common(parser, default_size):
     parser.add_argument("--out", required=True, help="the figure's file: .png, .svg or .pdf")
     parser.add_argument("--title")
@@ -114,11 +118,35 @@ def main(argv):
     v.add_argument("--logy", nargs="?", const="log", choices=["log", "symlog"])
     common(v, (6.4, 4.0))
 
+    m = kinds.add_parser("map", help="a value over a plane: heat map, contours, paths",
+                         description="A column of a CSV grid (e.g. `tendril safety map`'s) as a "
+                         "heat map over two others, with contour lines at given levels of it or "
+                         "of other columns, and paths and circles drawn over it.")
+    m.add_argument("file")
+    m.add_argument("--x", required=True, help="the column on the x axis")
+    m.add_argument("--y", required=True, help="the column on the y axis")
+    m.add_argument("--z", required=True, help="the column drawn as colour")
+    m.add_argument("--zlabel", help="the colour bar's label (default: the column)")
+    m.add_argument("--vmin", type=float)
+    m.add_argument("--vmax", type=float)
+    m.add_argument("--colormap", default="viridis")
+    m.add_argument("--contour", action="append", metavar="COLUMN:LEVEL[,LEVEL...][:LABEL]",
+                   help="contour lines of a column at the levels; repeatable (solid, dashed, "
+                   "dotted, ... in turn)")
+    m.add_argument("--level-labels", action="store_true", help="write the level on single contours")
+    m.add_argument("--path", action="append", metavar="FILE:XCOLUMN,YCOLUMN[:LABEL]",
+                   help="a path from another CSV file's columns, in row order; repeatable")
+    m.add_argument("--circle", action="append", type=circle, metavar="X,Y,R[:LABEL]",
+                   help="a circle in data units (a constraint boundary); repeatable")
+    m.add_argument("--equal", action="store_true", help="equal scales on x and y")
+    common(m, (6.4, 5.0))
+
     args = parser.parse_args(argv)
-    from . import figures, tables  # matplotlib loads only when a figure is drawn
+    from . import figures, maps, tables  # matplotlib loads only when a figure is drawn
 
     try:
-        {"curves": figures.curves, "episode": figures.episode, "csv": tables.csv_columns}[args.figure](args)
+        {"curves": figures.curves, "episode": figures.episode, "csv": tables.csv_columns,
+         "map": maps.value_map}[args.figure](args)
     except (PlotError, EpisodeError) as error:
         print(f"tendril plot: error: {error}", file=sys.stderr)
         return 1

@@ -36,6 +36,7 @@ TEST(Registry, ListsTheBuiltinReferenceTasks) {
                                                         "Safety/DoubleIntegrator-v0",
                                                         "Safety/DubinsCar-v0",
                                                         "SmaLimb/LearnedReach-v0",
+                                                        "SmaLimb/LearnedSafety-v0",
                                                         "SmaLimb/Robot-v0",
                                                         "UR5/Reach-v0"}));
   EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
@@ -57,7 +58,7 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/LearnedReach-v0, "
             "PneumaticArm/Reach-v0, "
             "PneumaticArm/Robot-v0, Safety/DoubleIntegrator-v0, Safety/DubinsCar-v0, "
-            "SmaLimb/LearnedReach-v0, SmaLimb/Robot-v0, UR5/Reach-v0");
+            "SmaLimb/LearnedReach-v0, SmaLimb/LearnedSafety-v0, SmaLimb/Robot-v0, UR5/Reach-v0");
 }
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {
@@ -107,16 +108,17 @@ TEST(Registry, AddingAnEnvironmentIsOneCall) {
 
 // Under random actions every task but CartPole (whose pole falls within a few dozen steps), the
 // pneumatic arm's reach (whose tip wanders out of its workspace boundary), the UR5's reach (whose
-// arm soon touches the table, the box or itself) and the safe-control tasks (which drift past
-// their absolute bounds) runs until the time limit cuts it: an early termination there is a failure
-// (for the soft-arm cases the only termination is a non-finite state), as is a NaN flag or a
-// non-finite reward. Environments without a registered limit (robots that run for hours) run 200
-// steps.
+// arm soon touches the table, the box or itself), the safe-control tasks (which drift past
+// their absolute bounds) and the limb's safety task (which bends out of its 30° disc) runs until
+// the time limit cuts it: an early termination there is a failure (for the soft-arm cases the only
+// termination is a non-finite state), as is a NaN flag or a non-finite reward. Environments without
+// a registered limit (robots that run for hours) run 200 steps.
 TEST(Registry, EveryBuiltinEnvironmentRunsAnEpisodeToItsLimit) {
   const std::set<std::string> terminates_under_random_actions{
       "CartPole-v1",           "PneumaticArm/LearnedReach-v0",
       "PneumaticArm/Reach-v0", "Safety/DoubleIntegrator-v0",
-      "Safety/DubinsCar-v0",   "UR5/Reach-v0"};
+      "Safety/DubinsCar-v0",   "SmaLimb/LearnedSafety-v0",
+      "UR5/Reach-v0"};
   for (const std::string& id : registered_ids()) {
     const auto env = make(id);
     const std::optional<int64_t> registered = builtin_registry().spec(id).max_episode_steps;

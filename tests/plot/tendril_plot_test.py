@@ -227,6 +227,39 @@ class FigureTest(unittest.TestCase):
         self.assertIn("expected X0,X1,Y0,Y1[:LABEL], got '0,1,2'", result.stderr)
         self.assertFalse(os.path.exists(out))
 
+    def test_value_map_with_contours_paths_and_circles(self):
+        # A 21 × 11 grid in scrambled row order: V = 10 − x² − y², an indicator of x < 0.
+        grid = os.path.join(OUT, "value_grid.csv")
+        points = [(x / 10, y / 10) for y in range(-5, 6) for x in range(-10, 11)]
+        points = points[1::2] + points[0::2]
+        with open(grid, "w") as f:
+            f.write("x,y,value,left\n")
+            for x, y in points:
+                f.write(f"{x},{y},{10 - x * x - y * y},{1 if x < 0 else 0}\n")
+        path = os.path.join(OUT, "value_path.csv")
+        with open(path, "w") as f:
+            f.write("px,py\n-0.5,0\n0,0.3\n0.5,0\n")
+
+        def count_curves(name, *options):
+            svg = self.draw(name, "map", grid, "--x", "x", "--y", "y", "--z", "value", *options)
+            with open(svg) as f:
+                return len(re.findall(r'<path d="M', f.read()))
+
+        plain = count_curves("map_plain.svg")
+        drawn = count_curves("map_drawn.svg", "--contour", "left:0.5:x < 0", "--path",
+                             path + ":px,py:trajectory", "--circle", "0,0,0.4:circle")
+        self.assertGreaterEqual(drawn, plain + 3, "a contour, a path and a circle")
+        self.assert_picture(self.draw("map.png", "map", grid, "--x", "x", "--y", "y", "--z",
+                                      "value", "--contour", "value:6,9", "--equal"))
+        with open(os.path.join(OUT, "holey.csv"), "w") as f:
+            f.write("x,y,value\n0,0,1\n1,0,2\n0,1,3\n")
+        out = os.path.join(OUT, "holey.png")
+        result = plot("map", os.path.join(OUT, "holey.csv"), "--x", "x", "--y", "y", "--z",
+                      "value", "--out", out)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("do not form a full grid", result.stderr)
+        self.assertFalse(os.path.exists(out))
+
     def test_bad_input_is_named_and_writes_nothing(self):
         out = os.path.join(OUT, "never.png")
         result = plot("csv", os.path.join(RUN, "progress.csv"), "--x", "nope", "--y",

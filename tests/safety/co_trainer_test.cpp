@@ -58,9 +58,10 @@ TEST(SafetyCoTrainer, GateClosesAtTheFirstUnsafeTransitionAndReopensWithTheEpiso
   feed(trainer, {2.1f, 1.0f, 0.02f}, 2.0f, {2.5f, 1.0f, 0.03f}, false, 3);  // gated
   feed(trainer, {2.5f, 1.0f, 0.03f}, 0.0f, {2.9f, 1.0f, 0.04f}, true, 4);   // gated; episode ends
   feed(trainer, {0.0f, 0.0f, 0.0f}, 1.0f, {0.0f, 0.0f, 0.01f}, false, 5);   // new episode
+  feed(trainer, {0.0f, 0.0f, 0.99f}, 1.0f, {0.0f, 0.0f, 1.0f}, true, 6);    // its time limit
 
   const rl::ReplayBuffer& buffer = trainer.buffer();
-  ASSERT_EQ(buffer.size(), 3);
+  ASSERT_EQ(buffer.size(), 4);
   EXPECT_EQ(trainer.gated_transitions(), 2);
   EXPECT_EQ(trainer.unsafe_entries(), 1);
   // l(x) = min(2 − 1, 3 − 1)/2 = 0.5 for the first transition.
@@ -72,6 +73,10 @@ TEST(SafetyCoTrainer, GateClosesAtTheFirstUnsafeTransitionAndReopensWithTheEpiso
   EXPECT_TRUE(buffer.terminated(1));
   EXPECT_FLOAT_EQ(buffer.next_observation(1)[0], 2.1f);
   EXPECT_FLOAT_EQ(buffer.reward(2), 1.0f);  // l at the origin
+  EXPECT_FALSE(buffer.terminated(2));
+  // The time limit T ends the safety agent's finite-horizon episode (§6.2.1): no bootstrap.
+  EXPECT_FLOAT_EQ(buffer.reward(3), 1.0f);
+  EXPECT_TRUE(buffer.terminated(3));
 }
 
 TEST(SafetyCoTrainer, UnsafeSamplesCarryTheSupervisedTarget) {

@@ -10,6 +10,7 @@
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/safety/safety_critic.hpp"
+#include "tendril/safety/safety_evaluation.hpp"
 
 namespace tendril::safety {
 namespace {

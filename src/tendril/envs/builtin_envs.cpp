@@ -16,6 +16,7 @@
 #include "tendril/envs/safe_control/dubins_car.hpp"
 #include "tendril/envs/sma_limb/learned_reach_env.hpp"
 #include "tendril/envs/sma_limb/learned_reach_vec_env.hpp"
+#include "tendril/envs/sma_limb/learned_safety_env.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
 #include "tendril/envs/ur5/ur5_reach.hpp"
 
@@ -73,6 +74,10 @@ void register_builtin_envs(Registry& registry) {
                 sma_limb::LearnedReachEnv::kEpisodeSteps,
                 "SMA limb reaches a goal angle inside a learned model of the limb",
                 &sma_limb::LearnedReachVecEnv::create});
+  // Its safety agent's environment inside a learned model of the limb (seed 001 §6.5.2),
+  // truncated at its own configured horizon.
+  registry.add({sma_limb::LearnedSafetyEnv::kId, &sma_limb::LearnedSafetyEnv::create, std::nullopt,
+                "SMA limb kept within a 30° bend inside a learned model (safety filter)"});
   // Seed 004 (SPEC M10): the UR5 in MuJoCo, 1000 steps of 20 ms.
   registry.add({ur5::Ur5Reach::kId, &ur5::Ur5Reach::create, ur5::Ur5Reach::kEpisodeSteps,
                 "UR5 arm reaches past an obstacle box, tool down (MuJoCo)"});

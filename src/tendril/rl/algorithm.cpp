@@ -57,6 +57,13 @@ void Algorithm::learn(int64_t total_timesteps,
   learn(total_timesteps, Observers{&callback});
 }
 
+void Algorithm::set_step_counters(int64_t timesteps, int64_t total_timesteps) {
+  require(timesteps >= 0 && total_timesteps > 0,
+          "step counters must be non-negative, the budget positive", name_);
+  num_timesteps_ = timesteps;
+  total_timesteps_ = total_timesteps;
+}
+
 double Algorithm::progress_remaining() const {
   const double done = static_cast<double>(num_timesteps_) / static_cast<double>(total_timesteps_);
   return std::clamp(1.0 - done, 0.0, 1.0);

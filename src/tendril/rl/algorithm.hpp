@@ -98,6 +98,10 @@ class Algorithm {
   envs::VecEnv& env() { return env_; }
   const envs::VecEnv& env() const { return env_; }
   Rng& stream(Stream purpose);
+  // For an algorithm that learns from steps someone else takes (a co-trained critic): the step
+  // counters its schedules read (exploration, learning rates), as if its own `learn` of
+  // `total_timesteps` had reached `timesteps`.
+  void set_step_counters(int64_t timesteps, int64_t total_timesteps);
   Rng init_stream() const { return Rng(seed_, static_cast<uint64_t>(Stream::kInit)); }
   // The observations the next step acts on; resets every environment first (seeded from the
   // env-seed stream) when needed.

@@ -39,8 +39,12 @@ class OffPolicyAlgorithm : public Algorithm {
   // safety agent). The buffer must have this algorithm's observation and action sizes.
   TrainStats train_on(const ReplayBuffer& buffer, int64_t gradient_steps,
                       double progress_remaining);
-  // Counts one vector-env step collected elsewhere (DQN's target-update period counts them).
-  void count_external_step() { after_step(); }
+  // Counts one vector-env step collected elsewhere, `timesteps` environment steps into a budget
+  // of `total_timesteps` (DQN's target-update period and exploration schedule follow them).
+  void count_external_step(int64_t timesteps, int64_t total_timesteps) {
+    set_step_counters(timesteps, total_timesteps);
+    after_step();
+  }
 
  protected:
   // `stored_observation_size`: the size of what store_observations makes of an observation

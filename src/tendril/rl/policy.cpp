@@ -171,6 +171,17 @@ void scale_to_bounds(const Space& space, Eigen::MatrixXf& actions) {
   }
 }
 
+void unscale_from_bounds(const Space& space, Eigen::MatrixXf& actions) {
+  if (!space.is_box()) return;
+  const Eigen::ArrayXf low = space.low().array(), range = (space.high() - space.low()).array();
+  for (Eigen::Index i = 0; i < actions.cols(); ++i) {
+    actions.col(i) = (2.0f * (actions.col(i).array() - low) / range - 1.0f)
+                         .cwiseMax(-1.0f)
+                         .cwiseMin(1.0f)
+                         .matrix();
+  }
+}
+
 void clip_to_bounds(const Space& space, Eigen::MatrixXf& actions) {
   if (!space.is_box()) return;
   for (Eigen::Index i = 0; i < actions.cols(); ++i) {

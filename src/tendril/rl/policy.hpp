@@ -100,6 +100,9 @@ Space read_space(const ArchiveReader& reader, const std::string& prefix);
 // Maps actions in [−1, 1] affinely onto a Box's finite bounds (SB3's unscale_action, after
 // clipping to [−1, 1]); off-policy actors act in [−1, 1].
 void scale_to_bounds(const Space& space, Eigen::MatrixXf& actions);
+// The inverse: a Box's actions (env units, columns) into [−1, 1], clipped there; what an
+// off-policy algorithm stores for actions executed by someone else.
+void unscale_from_bounds(const Space& space, Eigen::MatrixXf& actions);
 // Clips actions to a Box's bounds (what SB3 does to on-policy Gaussian samples).
 void clip_to_bounds(const Space& space, Eigen::MatrixXf& actions);
 

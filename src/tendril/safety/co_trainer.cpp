@@ -25,15 +25,10 @@ SafetyCoTrainer::SafetyCoTrainer(rl::OffPolicyAlgorithm& safety_agent, const Con
 }
 
 Action SafetyCoTrainer::agent_action(const Eigen::Ref<const Eigen::VectorXf>& action) const {
-  // Off-policy agents store Box actions in [−1, 1] (inverse of rl::scale_to_bounds).
-  Action stored = action;
-  if (action_space_.is_box()) {
-    for (Eigen::Index i = 0; i < stored.size(); ++i) {
-      const float low = action_space_.low()[i], high = action_space_.high()[i];
-      stored[i] = std::clamp(2.0f * (action[i] - low) / (high - low) - 1.0f, -1.0f, 1.0f);
-    }
-  }
-  return stored;
+  // Off-policy agents store Box actions in [−1, 1].
+  Eigen::MatrixXf stored = action;
+  rl::unscale_from_bounds(action_space_, stored);
+  return stored.col(0);
 }
 
 void SafetyCoTrainer::store(const Eigen::Ref<const Eigen::VectorXf>& observation,
@@ -55,8 +50,14 @@ void SafetyCoTrainer::on_step(const rl::StepEvent& event) {
       const bool next_unsafe = constraint_.unsafe(next);
       const double level = SafetyReward::level(constraint_.margin(x), constraint_.max_margin());
       const double r = reward_.reward(level, constraint_.time_step(x), unsafe, next_unsafe);
-      const bool terminated = unsafe || next_unsafe || event.step.terminated[i] != 0;
-      store(x, agent_action(event.actions.row(i).transpose()), r, next, terminated);
+      // The safety agent's episode ends on entering X_unsafe and at the maximum length T
+      // (§6.2.1): with t in the state its problem has a finite horizon, so the time limit is a
+      // termination, not a truncation to bootstrap through (V beyond T is 0, the bound
+      // (1 − γ^{T+1})/(1 − γ) of §6.2.2).
+      const bool terminated = unsafe || next_unsafe || event.step.done(i);
+      const auto& actions =
+          filtered_env_ != nullptr ? filtered_env_->executed_actions() : event.actions;
+      store(x, agent_action(actions.row(i).transpose()), r, next, terminated);
       if (unsafe || next_unsafe) {
         gate_open_[i] = 0;
         ++unsafe_entries_;
@@ -79,7 +80,7 @@ void SafetyCoTrainer::on_step(const rl::StepEvent& event) {
     if (event.step.done(i)) gate_open_[i] = 1;
   }
   ++steps_;
-  agent_.count_external_step();
+  agent_.count_external_step(event.timesteps, total_timesteps_);
   if (steps_ % settings_.train_freq == 0 && stored_ >= settings_.learning_starts &&
       settings_.gradient_steps > 0) {
     const double remaining = std::clamp(

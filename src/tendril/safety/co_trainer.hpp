@@ -8,6 +8,7 @@
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/replay_buffer.hpp"
 #include "tendril/safety/constraint.hpp"
+#include "tendril/safety/filtered_vec_env.hpp"
 #include "tendril/safety/safety_reward.hpp"
 
 namespace tendril::safety {
@@ -27,6 +28,8 @@ struct CoTrainingSettings {
 // (an off-policy algorithm on the same spaces, never stepping the environments itself) from
 // it. The gate of each environment closes at the first transition into X_unsafe — stored, as
 // a termination — and opens again when its episode ends; the task agent's buffer is untouched.
+// An episode's last transition at the time limit is a termination too (the thesis' finite
+// horizon T, §6.2.1).
 //
 // Eq. (6.6), V_s(x) = −1/(1 − γ) on X_unsafe, is learnt as in the thesis' code (an MSE to
 // that target): each stored transition comes with `unsafe_samples_per_step` transitions from
@@ -39,6 +42,9 @@ class SafetyCoTrainer : public rl::Observer {
                   int64_t total_timesteps, uint64_t seed);
 
   void on_step(const rl::StepEvent& event) override;
+  // When the task agent acts through a FilteredVecEnv, the safety agent learns from what the
+  // environments executed rather than from the task agent's proposals. Borrows `env`.
+  void learn_executed_actions_of(const FilteredVecEnv& env) { filtered_env_ = &env; }
 
   const rl::ReplayBuffer& buffer() const { return buffer_; }
   int64_t stored_transitions() const { return stored_; }
@@ -53,6 +59,7 @@ class SafetyCoTrainer : public rl::Observer {
   Action agent_action(const Eigen::Ref<const Eigen::VectorXf>& action) const;
 
   rl::OffPolicyAlgorithm& agent_;
+  const FilteredVecEnv* filtered_env_ = nullptr;
   const Constraint& constraint_;
   SafetyReward reward_;
   CoTrainingSettings settings_;

@@ -6,6 +6,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/envs/safe_control/double_integrator.hpp"
 #include "tendril/envs/safe_control/dubins_car.hpp"
+#include "tendril/envs/sma_limb/learned_safety_env.hpp"
 #include "tendril/envs/wrappers/wrapper.hpp"
 
 namespace tendril::safety {
@@ -13,6 +14,7 @@ namespace {
 
 using envs::safe_control::DoubleIntegrator;
 using envs::safe_control::DubinsCar;
+using envs::sma_limb::LearnedSafetyEnv;
 
 // Observation [x, ẋ, t/T].
 class DoubleIntegratorConstraint : public Constraint {
@@ -70,6 +72,34 @@ class DubinsCarConstraint : public Constraint {
   DubinsCar::Params params_;
 };
 
+// Observation [θx, θy, θ̇x, θ̇y, t/T] of the limb's safety task: d = R − ‖θ‖ (the author's
+// l(x) = (30 − ‖θ‖)/30), unsafe draws over [−100, 100]⁴ as the author's code samples them.
+class LearnedLimbConstraint : public Constraint {
+ public:
+  explicit LearnedLimbConstraint(const LearnedSafetyEnv::Params& params) : params_(params) {}
+  double margin(const Observation& o) const override {
+    return LearnedSafetyEnv::safety_margin(params_, o[0], o[1]);
+  }
+  double max_margin() const override { return params_.safe_radius; }
+  int64_t time_step(const Observation& o) const override {
+    return std::llround(static_cast<double>(o[4]) * params_.horizon);
+  }
+  int64_t horizon() const override { return params_.horizon; }
+  Observation sample_unsafe(Rng& rng) const override {
+    Observation o(5);
+    const double v = params_.velocity_limit;
+    do {
+      for (int i = 0; i < 4; ++i) o[i] = static_cast<float>(rng.uniform(-v, v));
+      o[4] =
+          static_cast<float>(rng.below(params_.horizon + 1)) / static_cast<float>(params_.horizon);
+    } while (!unsafe(o));
+    return o;
+  }
+
+ private:
+  LearnedSafetyEnv::Params params_;
+};
+
 }  // namespace
 
 std::unique_ptr<Constraint> constraint_of(Env& env) {
@@ -78,6 +108,9 @@ std::unique_ptr<Constraint> constraint_of(Env& env) {
   }
   if (const auto* car = envs::find_wrapper<DubinsCar>(env)) {
     return std::make_unique<DubinsCarConstraint>(car->params());
+  }
+  if (const auto* limb = envs::find_wrapper<LearnedSafetyEnv>(env)) {
+    return std::make_unique<LearnedLimbConstraint>(limb->params());
   }
   throw Error("the environment has no safety constraint (safe-control environments have one)",
               "safety::constraint_of");

@@ -83,6 +83,12 @@ SacSafetyCritic::SacSafetyCritic(const rl::Policy& actor, const rl::QCritics& cr
           "SacSafetyCritic");
 }
 
+SacSafetyCritic::SacSafetyCritic(const rl::Sac& agent)
+    : SacSafetyCritic(agent.policy(), agent.critics()) {
+  live_agent_ = &agent;
+  synced_updates_ = agent.gradient_updates();
+}
+
 SacSafetyCritic::SacSafetyCritic(std::unique_ptr<const rl::Policy> actor,
                                  const rl::QCritics& critics)
     : owned_actor_(std::move(actor)), actor_(*owned_actor_), critics_(critics) {
@@ -100,16 +106,16 @@ void SacSafetyCritic::write(ArchiveWriter& writer) const {
 }
 
 double SacSafetyCritic::value(const Observation& observation, const Action& action) const {
-  const Space& space = actor_.action_space();
-  const auto obs_size = observation.size();
-  inputs_.resize(obs_size + action.size(), 1);
-  inputs_.col(0).head(obs_size) = observation;
-  // The critics see actions in [−1, 1], the inverse of rl::scale_to_bounds.
-  for (Eigen::Index i = 0; i < action.size(); ++i) {
-    const float low = space.low()[i], high = space.high()[i];
-    inputs_(obs_size + i, 0) =
-        std::clamp(2.0f * (action[i] - low) / (high - low) - 1.0f, -1.0f, 1.0f);
+  if (live_agent_ != nullptr && live_agent_->gradient_updates() != synced_updates_) {
+    critics_.set_parameters(live_agent_->critics().parameters());
+    synced_updates_ = live_agent_->gradient_updates();
   }
+  const auto obs_size = observation.size();
+  // The critics see actions in [−1, 1].
+  Eigen::MatrixXf unit_action = action;
+  rl::unscale_from_bounds(actor_.action_space(), unit_action);
+  inputs_.resize(obs_size + action.size(), 1);
+  inputs_.col(0) << observation, unit_action.col(0);
   critics_.forward(inputs_, /*target=*/false);
   return static_cast<double>(critics_.values().col(0).minCoeff());
 }

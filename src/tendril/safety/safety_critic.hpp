@@ -9,6 +9,7 @@
 #include "tendril/rl/dqn/q_greedy_policy.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/q_critics.hpp"
+#include "tendril/rl/sac/sac.hpp"
 
 namespace tendril::safety {
 
@@ -45,6 +46,9 @@ std::unique_ptr<SafetyCritic> load_safety_critic(const std::filesystem::path& fi
 class SacSafetyCritic : public SafetyCritic {
  public:
   SacSafetyCritic(const rl::Policy& actor, const rl::QCritics& critics);
+  // A view of an agent in training: before each value it takes the critics' newest parameters
+  // when the agent has updated since (the filter that acts while co-training).
+  explicit SacSafetyCritic(const rl::Sac& agent);
   // Owns its actor (a critic read from a file).
   SacSafetyCritic(std::unique_ptr<const rl::Policy> actor, const rl::QCritics& critics);
   double value(const Observation& observation, const Action& action) const override;
@@ -58,6 +62,8 @@ class SacSafetyCritic : public SafetyCritic {
   std::unique_ptr<const rl::Policy> owned_actor_;
   const rl::Policy& actor_;
   mutable rl::QCritics critics_;
+  const rl::Sac* live_agent_ = nullptr;
+  mutable int64_t synced_updates_ = 0;
   mutable Rng unused_rng_;
   mutable Eigen::MatrixXf inputs_;
 };

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/algorithm_registry.hpp"
@@ -13,6 +12,7 @@
 #include "tendril/rl/sac/sac.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
+#include "tendril/safety/run_files.hpp"
 #include "tendril/safety/safety_critic.hpp"
 
 namespace tendril::safety {
@@ -40,6 +40,48 @@ std::unique_ptr<SafetyCritic> critic_of(const std::string& algorithm, const rl::
   return std::make_unique<DqnSafetyCritic>(dynamic_cast<const rl::QGreedyPolicy&>(agent.policy()));
 }
 
+// The critic of an agent in training, following its updates (DQN's policy is its network).
+std::unique_ptr<SafetyCritic> live_critic_of(const std::string& algorithm,
+                                             const rl::Algorithm& agent) {
+  if (algorithm == "sac") {
+    return std::make_unique<SacSafetyCritic>(dynamic_cast<const rl::Sac&>(agent));
+  }
+  return critic_of(algorithm, agent);
+}
+
+// The safety agent's scalars of an iteration: its last update ("train/x" as "safety/x"), its
+// buffer and, with a training filter, the share of the iteration's decisions it overrode.
+class SafetyScalars {
+ public:
+  SafetyScalars(const SafetyCoTrainer& co_trainer, const FilteredVecEnv* filtered)
+      : co_trainer_(co_trainer), filtered_(filtered) {}
+
+  void operator()(rl::TrainStats& stats) {
+    for (const auto& [name, value] : co_trainer_.last_stats()) {
+      const std::string prefix = "train/";
+      stats.emplace_back(
+          "safety/" + (name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name), value);
+    }
+    stats.emplace_back("safety/stored_transitions",
+                       static_cast<double>(co_trainer_.stored_transitions()));
+    stats.emplace_back("safety/unsafe_entries", static_cast<double>(co_trainer_.unsafe_entries()));
+    if (filtered_ == nullptr) return;
+    const int64_t decisions = filtered_->decisions() - decisions_;
+    const int64_t interventions = filtered_->interventions() - interventions_;
+    decisions_ = filtered_->decisions();
+    interventions_ = filtered_->interventions();
+    if (decisions > 0) {
+      stats.emplace_back("safety/intervention_rate",
+                         static_cast<double>(interventions) / static_cast<double>(decisions));
+    }
+  }
+
+ private:
+  const SafetyCoTrainer& co_trainer_;
+  const FilteredVecEnv* filtered_;
+  int64_t decisions_ = 0, interventions_ = 0;
+};
+
 }  // namespace
 
 SafetyExperiment SafetyExperiment::from_config(Config config) {
@@ -63,6 +105,11 @@ SafetyExperiment SafetyExperiment::from_config(Config config) {
   require(e.co_training.gradient_steps >= 0, "must be non-negative", key(safety, "gradient_steps"));
   require(e.co_training.unsafe_samples_per_step >= 0, "must be non-negative",
           key(safety, "unsafe_samples_per_step"));
+  const Config training_filter = safety.child("training_filter");
+  e.training_filter = training_filter.get_or<bool>("enabled", e.training_filter);
+  e.training_filter_epsilon = training_filter.get_or<double>("epsilon", e.training_filter_epsilon);
+  require(std::isfinite(e.training_filter_epsilon), "must be finite",
+          key(training_filter, "epsilon"));
   const Config eval = safety.child("eval");
   e.eval_episodes = eval.get_or<int>("episodes", e.eval_episodes);
   e.eval_epsilon = eval.get_or<double>("epsilon", e.eval_epsilon);
@@ -90,27 +137,43 @@ SafetyExperiment SafetyExperiment::from_config(Config config) {
 }
 
 SafetyTrainResult train_with_safety(const SafetyExperiment& experiment,
-                                    const std::filesystem::path& run_directory) {
-  namespace fs = std::filesystem;
-  if (fs::exists(run_directory) && !fs::is_empty(run_directory)) {
-    throw Error("the run directory is not empty; nothing is overwritten", run_directory.string());
-  }
-  fs::create_directories(run_directory);
-  write_new_file_atomically(run_directory / "config.yaml", experiment.task.config.dump() + "\n",
-                            "config");
+                                    const std::filesystem::path& run_directory, bool quiet) {
+  start_run_directory(run_directory, experiment.task.config);
   const auto start = std::chrono::steady_clock::now();
   const rl::Experiment& task_experiment = experiment.task;
-  auto env = rl::make_vec_env(task_experiment.env);
-  auto task = rl::make_algorithm(task_experiment, *env);
+  std::unique_ptr<envs::VecEnv> env = rl::make_vec_env(task_experiment.env);
+  // The safety agent never steps the environments; it is built on them for their spaces.
   auto safety_agent = make_safety_agent(experiment.safety_algorithm, experiment.safety_algo, *env,
                                         task_experiment.seed + 1, "safety.algorithm");
   auto& off_policy = dynamic_cast<rl::OffPolicyAlgorithm&>(*safety_agent);
+  std::unique_ptr<SafetyCritic> live_critic;
+  FilteredVecEnv* filtered = nullptr;
+  Rng filter_rng(task_experiment.seed + 3);
+  if (experiment.training_filter) {
+    live_critic = live_critic_of(experiment.safety_algorithm, *safety_agent);
+    const rl::Policy& safety_policy = safety_agent->policy();
+    auto wrapper = std::make_unique<FilteredVecEnv>(
+        std::move(env), *live_critic,
+        [&safety_policy, &filter_rng](const Observation& x) {
+          return safety_policy.act(x, /*deterministic=*/false, filter_rng);
+        },
+        experiment.training_filter_epsilon);
+    filtered = wrapper.get();
+    env = std::move(wrapper);
+  }
+  auto task = rl::make_algorithm(task_experiment, *env);
   auto single = envs::make(task_experiment.env.id, task_experiment.env.params);
   const auto constraint = constraint_of(*single);
   SafetyCoTrainer co_trainer(off_policy, *constraint, SafetyReward(experiment.safety_gamma),
                              experiment.co_training, task_experiment.n_timesteps,
                              task_experiment.seed + 2);
-  task->learn(task_experiment.n_timesteps, rl::Observers{&co_trainer});
+  if (filtered != nullptr) co_trainer.learn_executed_actions_of(*filtered);
+  RunScalarLog progress(run_directory, SafetyScalars(co_trainer, filtered));
+  rl::ProgressLine progress_line(task_experiment.n_timesteps, 0);
+  rl::Observers observers{&co_trainer, &progress};
+  if (!quiet) observers.push_back(&progress_line);
+  task->learn(task_experiment.n_timesteps, observers);
+  if (!quiet) progress_line.finish();
   task->policy().save(run_directory / "model.policy");
   critic_of(experiment.safety_algorithm, *safety_agent)->save(run_directory / "safety.critic");
 
@@ -120,67 +183,10 @@ SafetyTrainResult train_with_safety(const SafetyExperiment& experiment,
   result.stored_transitions = co_trainer.stored_transitions();
   result.gated_transitions = co_trainer.gated_transitions();
   result.unsafe_entries = co_trainer.unsafe_entries();
-  return result;
-}
-
-SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
-                                 int episodes, uint64_t seed) {
-  require(episodes >= 1, "at least one episode", "evaluate_safety");
-  std::vector<double> returns;
-  int safe = 0;
-  for (int i = 0; i < episodes; ++i) {
-    Observation observation = env.reset(seed + static_cast<uint64_t>(i));
-    bool violated = constraint.unsafe(observation);
-    double total = 0.0;
-    for (;;) {
-      const Step step = env.step(actor(observation));
-      total += step.reward;
-      observation = step.observation;
-      violated = violated || constraint.unsafe(observation);
-      if (step.terminated || step.truncated) break;
-    }
-    returns.push_back(total);
-    if (!violated) ++safe;
+  if (filtered != nullptr && filtered->decisions() > 0) {
+    result.training_intervention_rate =
+        static_cast<double>(filtered->interventions()) / static_cast<double>(filtered->decisions());
   }
-  SafetyEvaluation result;
-  result.episodes = episodes;
-  for (double r : returns) result.mean_return += r / episodes;
-  for (double r : returns) {
-    result.std_return += (r - result.mean_return) * (r - result.mean_return) / episodes;
-  }
-  result.std_return = std::sqrt(result.std_return);
-  result.safety_rate = static_cast<double>(safe) / episodes;
-  return result;
-}
-
-RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directory, double epsilon,
-                                        int episodes, uint64_t seed) {
-  const bool has_critic = std::filesystem::exists(run_directory / "safety.critic");
-  const rl::Experiment task =
-      has_critic
-          ? SafetyExperiment::from_config(Config::load_file(run_directory / "config.yaml")).task
-          : rl::load_run_experiment(run_directory);
-  require(!task.env.normalize_observation,
-          "safety is judged on raw observations: the run normalizes them", run_directory.string());
-  const auto policy = rl::load_policy(run_directory / "model.policy");
-  Config params = task.env.params;
-  if (params.has("unsafe_penalty")) params.set("unsafe_penalty", "0");
-  auto env = envs::make(task.env.id, params);
-  const auto constraint = constraint_of(*env);
-
-  RunSafetyEvaluation result;
-  result.epsilon = epsilon;
-  Rng task_rng(seed);
-  result.unfiltered = evaluate_safety(
-      *env, *constraint, policy_actor(*policy, task.eval_deterministic, task_rng), episodes, seed);
-  if (!has_critic) return result;
-  const auto critic = load_safety_critic(run_directory / "safety.critic");
-  Rng filtered_rng(seed);
-  SafetyFilter filter(policy_actor(*policy, task.eval_deterministic, filtered_rng), *critic,
-                      epsilon);
-  result.filtered = evaluate_safety(
-      *env, *constraint, [&filter](const Observation& x) { return filter.act(x); }, episodes, seed);
-  result.filtered->intervention_rate = filter.intervention_rate();
   return result;
 }
 

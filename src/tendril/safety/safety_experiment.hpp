@@ -30,15 +30,24 @@ namespace tendril::safety {
 //     train_freq: 1
 //     gradient_steps: 1
 //     unsafe_samples_per_step: 1   # eq. 6.6
+//     training_filter: {enabled: false, epsilon: 0.0}   # who acts while co-training
 //     eval: {episodes: 100, epsilon: 0.0, deterministic: true}   # ε₂ of eq. 6.5
 //
-// The safety agent is seeded with seed + 1, the co-trainer's draws with seed + 2.
+// With `training_filter.enabled`, the task agent acts through the safety filter at that ε₂
+// (FilteredVecEnv), with draws of the safety agent's exploring policy where the filter
+// intervenes; otherwise the task agent alone acts, and the safety agent only watches. The thesis
+// does not say which (§6.3.1); see configs/safety/ for the choice per environment.
+//
+// The safety agent is seeded with seed + 1, the co-trainer's draws with seed + 2, the filter's
+// draws with seed + 3.
 struct SafetyExperiment {
   rl::Experiment task;
   std::string safety_algorithm;
   Config safety_algo;
   double safety_gamma = 0.99;
   CoTrainingSettings co_training;
+  bool training_filter = false;
+  double training_filter_epsilon = 0.0;
   int eval_episodes = 100;
   double eval_epsilon = 0.0;
   bool eval_deterministic = true;
@@ -54,35 +63,16 @@ struct SafetyTrainResult {
   int64_t stored_transitions = 0;  // in the gated safety buffer
   int64_t gated_transitions = 0;
   int64_t unsafe_entries = 0;
+  double training_intervention_rate = 0.0;  // of the training filter's decisions (0 without)
 };
 
 // Trains the task agent with the co-trained safety agent into `run_directory` (which must not
-// exist or be empty): config.yaml, model.policy (the task policy, rl::load_policy) and
-// safety.critic (load_safety_critic).
+// exist or be empty): config.yaml, progress.csv and the TensorBoard event file (the task
+// agent's scalars, Stable-Baselines3's names, and the safety agent's as safety/...),
+// model.policy (the task policy, rl::load_policy) and safety.critic (load_safety_critic).
+// A live progress line goes to standard error unless `quiet`. No checkpoints: a run is not
+// resumed.
 SafetyTrainResult train_with_safety(const SafetyExperiment& experiment,
-                                    const std::filesystem::path& run_directory);
-
-// Returns and safety of `episodes` episodes (reset seeds seed, seed + 1, ...). An episode is
-// safe when none of its observations, the first included, lies in X_unsafe.
-struct SafetyEvaluation {
-  int episodes = 0;
-  double mean_return = 0.0;
-  double std_return = 0.0;
-  double safety_rate = 0.0;        // fraction of safe episodes
-  double intervention_rate = 0.0;  // of the filter's decisions (0 without a filter)
-};
-SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
-                                 int episodes, uint64_t seed);
-
-// A run of train_with_safety evaluated on the same episodes without and with the filter at ε₂;
-// a run of `tendril train` (no safety.critic, e.g. the reward-penalty baseline) without it.
-// Returns are the task reward's: an environment's `unsafe_penalty` is set to 0 for this.
-struct RunSafetyEvaluation {
-  double epsilon = 0.0;
-  SafetyEvaluation unfiltered;
-  std::optional<SafetyEvaluation> filtered;
-};
-RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directory, double epsilon,
-                                        int episodes, uint64_t seed);
+                                    const std::filesystem::path& run_directory, bool quiet = false);
 
 }  // namespace tendril::safety

@@ -114,3 +114,30 @@ TEST(DubinsCar, AScriptedOrbitKeepsEveryStartSafe) {
 
 }  // namespace
 }  // namespace tendril::envs::safe_control
+
+namespace tendril::envs::safe_control {
+namespace {
+
+// The speed-input reading of §6.4.1: the action [ω, v] sets the speed too; at v = 0 the car
+// stands (every safe state is recoverable), and v is held to [min_speed, speed].
+TEST(DubinsCar, SpeedControlMakesTheSpeedAnInput) {
+  DubinsCar::Params params;
+  params.speed_control = true;
+  DubinsCar env(params);
+  ASSERT_EQ(env.action_space().size(), 2);
+  EXPECT_FLOAT_EQ(env.action_space().low()[1], 0.0f);
+  EXPECT_FLOAT_EQ(env.action_space().high()[1], 1.2f);
+  env.reset(0);
+  env.set_state(-1.5, -1.5, 0.0);
+  env.step(Eigen::Vector2f(0.0f, 0.0f));
+  EXPECT_DOUBLE_EQ(env.state()[0], -1.5);
+  env.step(Eigen::Vector2f(0.0f, 0.6f));
+  EXPECT_NEAR(env.state()[0], -1.5 + 0.6 * 0.05, 1e-8);  // v = 0.6f
+  env.step(Eigen::Vector2f(0.0f, 5.0f));  // held to 1.2 m/s
+  EXPECT_NEAR(env.state()[0], -1.5 + 1.8 * 0.05, 1e-8);
+  EXPECT_THROW(DubinsCar::create(Config::parse("speed_control: true\ndiscrete_actions: 5")), Error);
+  EXPECT_THROW(DubinsCar::create(Config::parse("speed_control: true\nmin_speed: 2.0")), Error);
+}
+
+}  // namespace
+}  // namespace tendril::envs::safe_control

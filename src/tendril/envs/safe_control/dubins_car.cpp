@@ -31,6 +31,8 @@ std::unique_ptr<Env> DubinsCar::create(const Config& params) {
   p.heading_low = params.get_or("heading_low", p.heading_low);
   p.heading_high = params.get_or("heading_high", p.heading_high);
   p.unsafe_penalty = params.get_or("unsafe_penalty", p.unsafe_penalty);
+  p.speed_control = params.get_or("speed_control", p.speed_control);
+  p.min_speed = params.get_or("min_speed", p.min_speed);
   params.reject_unknown();
   return std::make_unique<DubinsCar>(p);
 }
@@ -45,6 +47,10 @@ DubinsCar::DubinsCar(Params params) : params_(params) {
           "need 0 ≤ obstacle_radius < box_limit < absolute_limit", who);
   require(params_.discrete_actions == 0 || params_.discrete_actions >= 2,
           "discrete_actions must be 0 (continuous) or at least 2", who);
+  require(!params_.speed_control || params_.discrete_actions == 0,
+          "speed_control needs continuous actions (discrete_actions: 0)", who);
+  require(params_.min_speed >= 0.0 && params_.min_speed <= params_.speed,
+          "min_speed must lie in [0, speed]", who);
   require(params_.start_low <= params_.start_high && params_.heading_low <= params_.heading_high,
           "start ranges must not be empty", who);
   require(safety_margin(params_, params_.start_low, params_.start_low) > 0.0 &&
@@ -57,10 +63,17 @@ DubinsCar::DubinsCar(Params params) : params_(params) {
   low << -inf, -inf, -1.0f, -1.0f, 0.0f;
   high << inf, inf, 1.0f, 1.0f, 1.0f;
   observation_space_ = Space::box(low, high);
-  action_space_ = params_.discrete_actions > 0
-                      ? Space::discrete(params_.discrete_actions)
-                      : Space::box(1, static_cast<float>(-params_.max_turn_rate),
-                                   static_cast<float>(params_.max_turn_rate));
+  if (params_.discrete_actions > 0) {
+    action_space_ = Space::discrete(params_.discrete_actions);
+  } else if (params_.speed_control) {
+    action_space_ = Space::box(Eigen::Vector2f(static_cast<float>(-params_.max_turn_rate),
+                                               static_cast<float>(params_.min_speed)),
+                               Eigen::Vector2f(static_cast<float>(params_.max_turn_rate),
+                                               static_cast<float>(params_.speed)));
+  } else {
+    action_space_ = Space::box(1, static_cast<float>(-params_.max_turn_rate),
+                               static_cast<float>(params_.max_turn_rate));
+  }
 }
 
 double DubinsCar::safety_margin(const Params& params, double x, double y) {
@@ -83,6 +96,12 @@ double DubinsCar::turn_rate(const Action& action) const {
   return -w_max + 2.0 * w_max * static_cast<double>(index) / (params_.discrete_actions - 1);
 }
 
+double DubinsCar::commanded_speed(const Action& action) const {
+  if (!params_.speed_control) return params_.speed;
+  check_action(action_space_, action, kId);
+  return std::clamp(static_cast<double>(action[1]), params_.min_speed, params_.speed);
+}
+
 Observation DubinsCar::reset(std::optional<uint64_t> seed) {
   if (seed) rng_ = Rng(*seed);
   x_ = rng_.uniform(params_.start_low, params_.start_high);
@@ -94,7 +113,7 @@ Observation DubinsCar::reset(std::optional<uint64_t> seed) {
 
 Step DubinsCar::step(const Action& action) {
   const double omega = turn_rate(action);
-  const double v = params_.speed, dt = params_.dt;
+  const double v = commanded_speed(action), dt = params_.dt;
   const double heading = heading_ + omega * dt;
   if (std::abs(omega) < 1e-9) {
     x_ += v * dt * std::cos(heading_);

@@ -26,6 +26,15 @@ namespace tendril::envs::safe_control {
 //
 // Not in the thesis (labelled suggestions, in config): the dynamics form above, |ω| ≤ 2 rad/s,
 // dt = 0.05 s, T = 200, absolute box ±3 m, starts in the lower-left quadrant heading up-right.
+//
+// The thesis' sentence on the car is garbled ("the absolute maximum bounds are defined with an
+// input velocity of 1.2 m/s"). Two readings, both in config: the speed is fixed at 1.2 m/s and
+// ω is the only input (default; the spec's suggestion), or the speed is an input too, v ∈
+// [min_speed, 1.2] m/s (`speed_control`; the action is then [ω, v]). With a fixed speed the
+// turning radius of 0.6 m exceeds the 1 m corridor between disc and walls halfway, so the safe
+// set is a thin orbit; with a speed input the car can stop, every safe state is recoverable, and
+// a filter that keeps stopping short of the disc can deadlock against the task — the conflict
+// the thesis' discussion (§6.6) names.
 class DubinsCar : public Env {
  public:
   static constexpr const char* kId = "Safety/DubinsCar-v0";
@@ -49,6 +58,8 @@ class DubinsCar : public Env {
     // The reward-penalty baseline of seed 001 Table 6.1: subtracted from the reward of every step
     // that ends in X_unsafe (the thesis gives no size; 0 leaves the task reward alone).
     double unsafe_penalty = 0.0;
+    bool speed_control = false;  // the action is [ω, v] with v in [min_speed, speed]
+    double min_speed = 0.0;      // m/s
   };
   static std::unique_ptr<Env> create(const Config& params);
 
@@ -67,6 +78,8 @@ class DubinsCar : public Env {
   void set_state(double x, double y, double heading, int elapsed_steps = 0);
   Eigen::Vector3d state() const { return {x_, y_, heading_}; }
   double turn_rate(const Action& action) const;
+  // The speed an action commands (m/s): `speed`, or its clamped second entry with speed_control.
+  double commanded_speed(const Action& action) const;
 
   // d of eq. (6.4), m: the smallest distance to the box walls and to the disc.
   static double safety_margin(const Params& params, double x, double y);

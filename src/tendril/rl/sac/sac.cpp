@@ -261,12 +261,16 @@ double Sac::update_actor(float ent_coef, double learning_rate) {
     min_q_sum += q.col(i).minCoeff(&argmin);
     value_gradient_(argmin, i) = -inverse_batch;
   }
-  const double loss = ent_coef * static_cast<double>(policy_.log_probs_of(current_).mean()) -
-                      min_q_sum / static_cast<double>(batch_size);
+  double loss = ent_coef * static_cast<double>(policy_.log_probs_of(current_).mean()) -
+                min_q_sum / static_cast<double>(batch_size);
   critics_.backward(value_gradient_, /*parameters=*/false, &input_gradient_);
   // A trainable head also receives ∂L/∂(encoded observation) through the critics' inputs, and
   // below through the actor's.
   if (head_trains()) encoded_gradient_ += input_gradient_.topRows(encoded_gradient_.rows());
+  if (actor_penalty_ != nullptr) {
+    loss += actor_penalty_->add_gradient(batch_.observations, policy_.actions_of(current_),
+                                         input_gradient_.bottomRows(a));
+  }
 
   const nn::DenseMlp& actor = policy_.network();
   Eigen::VectorXf& actor_parameters = policy_.parameters();

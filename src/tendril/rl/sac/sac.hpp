@@ -8,6 +8,7 @@
 #include "tendril/rl/adam_checkpoint.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/q_critics.hpp"
+#include "tendril/rl/sac/actor_penalty.hpp"
 #include "tendril/rl/sac/sac_config.hpp"
 #include "tendril/rl/sac/squashed_gaussian_policy.hpp"
 
@@ -40,6 +41,10 @@ class Sac : public OffPolicyAlgorithm {
   // The head's weights and their target copy (empty without a head; equal for a frozen head).
   const Eigen::VectorXf& head_parameters() const { return policy_.head_parameters(); }
   const Eigen::VectorXf& head_target_parameters() const { return head_target_; }
+  // Adds `penalty` to the actor's objective from the next update on (nullptr removes it);
+  // borrowed. Not part of checkpoints: whoever sets it restores it. It sees the observations the
+  // replay buffer keeps (a frozen head's features when the policy has one).
+  void set_actor_penalty(ActorPenalty* penalty) { actor_penalty_ = penalty; }
 
  protected:
   void explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
@@ -82,6 +87,7 @@ class Sac : public OffPolicyAlgorithm {
   nn::Adam actor_optimizer_;
   QCritics critics_;
   Eigen::VectorXf log_ent_coef_;  // one entry: log α
+  ActorPenalty* actor_penalty_ = nullptr;
   nn::Adam ent_coef_optimizer_;
   Eigen::VectorXf head_target_, head_gradient_;
   nn::Adam head_optimizer_;
