@@ -147,7 +147,13 @@ try {
     const played = await page.$eval('input[type=range]', (el) => Number(el.value));
     check(played > before, `${name}: play advances the frames (${before} → ${played})`);
     check((await page.textContent('button.play')) === 'pause', `${name}: still playing at 0.1×`);
-    await page.click('button.play');  // pause
+    // Pause in one step inside the page: on a loaded machine the replay may have reached its end
+    // (and stopped) since the check above, and a click would then start it again.
+    const paused = await page.$eval('button.play', (el) => {
+      if (el.textContent === 'pause') el.click();
+      return el.textContent === 'play';
+    });
+    check(paused, `${name}: pause stops the replay`);
     const target = await page.$eval('input[type=range]', (el) => {
       el.value = String(Math.round(Number(el.max) * 0.6));
       el.dispatchEvent(new Event('input'));
