@@ -35,7 +35,9 @@ class DoubleIntegratorSpace : public SearchSpace {
     di->set_state(s[0] * scales_[0], s[1] * scales_[1]);
   }
   Eigen::VectorXd sample(Rng& rng) const override {
-    return Eigen::Vector2d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+    Eigen::Vector2d s;
+    s << rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0);  // drawn left to right
+    return s;
   }
   std::optional<bool> analytically_safe(const Eigen::VectorXd& s) const override {
     return DoubleIntegrator::in_analytic_safe_set(params_, s[0] * scales_[0], s[1] * scales_[1]);
@@ -70,7 +72,9 @@ class DubinsCarSpace : public SearchSpace {
     car->set_state(s[0] * scales_[0], s[1] * scales_[1], s[2] * scales_[2]);
   }
   Eigen::VectorXd sample(Rng& rng) const override {
-    return Eigen::Vector3d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+    Eigen::Vector3d s;
+    s << rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0);
+    return s;
   }
 
  private:
