@@ -15,6 +15,7 @@ int sweep_command(const std::vector<std::string>& args);
 int pneumatic_collect_command(const std::vector<std::string>& args);
 int pneumatic_replay_command(const std::vector<std::string>& args);
 int pneumatic_prepare_command(const std::vector<std::string>& args);
+int adapt_command(const std::vector<std::string>& args);
 int serve_command(const std::vector<std::string>& args);
 int record_command(const std::vector<std::string>& args);
 int plot_command(const std::vector<std::string>& args);

@@ -13,6 +13,7 @@
 #endif
 #ifdef TENDRIL_WITH_DYNAMICS
 #include "tendril/dynamics/env_model_loader.hpp"
+#include "tendril/dynamics/policy_heads.hpp"
 #endif
 
 namespace {
@@ -61,6 +62,9 @@ commands:
   prepare-pneumatic --train FILE [--test FILE] --out FILE
       The pneumatic arm's recordings (collect-pneumatic) as a prepared data set for
       `dynamics fit`: time_s, tips x1 … z3 [mm], commanded pressures p1 … p9 [bar], split.
+  adapt <adapt.yaml> [--set key=value ...] [--out DIR]
+      Adapt trained policies online on the pneumatic arm (seed 002: BOAC or GPRCA) in every
+      goal x damage scenario x seed of the file; per-trial logs and summary.csv (Table II).
   record <run-dir> [--episodes N] [--best] [--out DIR] [--seed S] [--deterministic|--stochastic]
       Record episodes of a run's model (as eval picks it) into <run-dir>/episodes/ (or DIR):
       the scene of every step, actions, rewards, info (docs/episode_format.md).
@@ -77,9 +81,10 @@ commands:
       replay open-loop throttles after cool-downs, compare exploration with babbling, or
       record the limb's response to the open-loop test inputs.
   track [circle|square|spiral|sml|all] [--limb stiff|soft] [--tip-mass KG] [--push N]
-        [--steps N] [--seed S] [--out FILE.csv]
-      Track reference paths in bend-angle space on the SMA limb twin with the PID baseline and
-      the 10° waypoint follower; print the tracking RMSE per path (--out: every step).
+        [--steps N] [--seed S] [--out FILE.csv] [--policy RUN [--best] [--stochastic]]
+      Track reference paths in bend-angle space on the SMA limb twin with the 10° waypoint
+      follower and the PID baseline, or a policy trained in SmaLimb/LearnedReach-v0 (its run
+      directory); print the tracking RMSE per path (--out: every step).
   dynamics fit <fit.yaml> [--set key=value ...] [--out DIR] [--quiet]
       Fit a learned dynamics model to a prepared data set; write the run directory (config,
       progress.csv, TensorBoard events, model.tdm, evaluation.csv).
@@ -118,6 +123,8 @@ int main(int argc, char** argv) {
 #ifdef TENDRIL_WITH_DYNAMICS
     // Environments around learned models open them from their `model` parameter.
     tendril::dynamics::install_model_loader();
+    // Policies with a learned-model head (seed 001 ch. 5) are trained and loaded.
+    tendril::dynamics::install_policy_heads();
 #endif
     if (args[0] == "simulate") return tendril::apps::simulate_command(rest);
     if (args[0] == "plot") return tendril::apps::plot_command(rest);
@@ -139,6 +146,9 @@ int main(int argc, char** argv) {
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
     if (args[0] == "record") return tendril::apps::record_command(rest);
     if (args[0] == "rollout") return tendril::apps::rollout_command(rest);
+#endif
+#ifdef TENDRIL_WITH_ADAPT
+    if (args[0] == "adapt") return tendril::apps::adapt_command(rest);
 #endif
 #ifdef TENDRIL_WITH_SAFETY
     if (args[0] == "safety") return tendril::apps::safety_command(rest);

@@ -1,9 +1,12 @@
 // `tendril track`: seed 001's tracking experiments (thesis §5.2, Tables 5.4–5.5) on the SMA limb
-// behind its robot interface — the twin here — with the PID baseline and the waypoint follower.
+// behind its robot interface — the twin here — with the waypoint follower and the PID baseline
+// or a policy trained in SmaLimb/LearnedReach-v0 (--policy RUN).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,6 +17,10 @@
 #include "tendril/core/error.hpp"
 #include "tendril/data/prepare.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
+#ifdef TENDRIL_WITH_RL
+#include "policy_controller.hpp"
+#include "run_policy.hpp"
+#endif
 
 namespace tendril::apps {
 
@@ -62,8 +69,8 @@ void write_run(const std::filesystem::path& file, const std::string& pattern,
 }  // namespace
 
 int track_command(const std::vector<std::string>& args) {
-  const CommandLine line =
-      CommandLine::parse(args, {"limb", "tip-mass", "push", "steps", "seed", "out"}, {});
+  const CommandLine line = CommandLine::parse(
+      args, {"limb", "tip-mass", "push", "steps", "seed", "out", "policy"}, {"best", "stochastic"});
   require(line.positional.size() <= 1, "usage: tendril track [PATTERN|all] [options]",
           "tendril track");
   const std::string which = line.positional.empty() ? "all" : line.positional[0];
@@ -78,8 +85,28 @@ int track_command(const std::vector<std::string>& args) {
   require(!out.empty() ? !std::filesystem::exists(out) : true,
           "refusing to overwrite an existing file", out);
 
-  std::printf("PID (Kp 2, Ki 0.001, Kd 0.5) on the %s limb twin, tip mass %.3f kg%s\n",
-              limb.c_str(), tip_mass, push_n > 0 ? ", pushes at 1/4 and 3/4" : "");
+  // The controller: PID, or a trained policy that acts on the limb as on the learned model.
+  std::function<std::unique_ptr<control::TrackingController>()> make_controller = [] {
+    return std::make_unique<control::PidController>();
+  };
+  std::string controller_name = "PID (Kp 2, Ki 0.001, Kd 0.5)";
+  if (line.has("policy")) {
+#ifdef TENDRIL_WITH_RL
+    const RunPolicy run = open_run_policy(line.value("policy", ""), line.has("best"));
+    const auto options =
+        envs::sma_limb::LearnedReachOptions::from_config(run.experiment.env.params);
+    const bool deterministic = !line.has("stochastic");
+    make_controller = [policy = run.policy, options, deterministic, seed] {
+      return std::make_unique<PolicyController>(policy, options, deterministic, seed);
+    };
+    controller_name = "the policy of " + run.source.string() +
+                      (deterministic ? " (mean actions)" : " (sampled actions)");
+#else
+    throw Error("this program was built without the RL layer", "tendril track --policy");
+#endif
+  }
+  std::printf("%s on the %s limb twin, tip mass %.3f kg%s\n", controller_name.c_str(), limb.c_str(),
+              tip_mass, push_n > 0 ? ", pushes at 1/4 and 3/4" : "");
   std::printf("%-8s %8s %9s %10s\n", "pattern", "steps", "finished", "RMSE [deg]");
   bool first = true;
   for (const std::string& pattern : patterns) {
@@ -89,7 +116,7 @@ int track_command(const std::vector<std::string>& args) {
     auto& robot = dynamic_cast<envs::sma_limb::SmaLimbEnv&>(*env);
     RobotLimb limb_under_control(robot, seed);
     control::WaypointFollower follower(control::reference_pattern(pattern));
-    control::PidController pid;
+    const std::unique_ptr<control::TrackingController> controller = make_controller();
     const int points = static_cast<int>(follower.points().cols());
     int pushes = 0;
     // Seed 001 §5.2.2 (a): a shove at 1/4 and 3/4 of the path, here along +x for 0.2 s.
@@ -102,9 +129,14 @@ int track_command(const std::vector<std::string>& args) {
       }
     };
     const control::TrackingRun run =
-        control::track(limb_under_control, pid, follower, max_steps, disturb);
-    std::printf("%-8s %8ld %9s %10.2f\n", pattern.c_str(), static_cast<long>(run.angles.cols()),
-                run.finished ? "yes" : "no", run.rmse_deg);
+        control::track(limb_under_control, *controller, follower, max_steps, disturb);
+    if (std::isnan(run.rmse_deg)) {
+      std::printf("%-8s %8ld %9s %s\n", pattern.c_str(), static_cast<long>(run.angles.cols()), "no",
+                  "the path's first point was never reached");
+    } else {
+      std::printf("%-8s %8ld %9s %10.2f\n", pattern.c_str(), static_cast<long>(run.angles.cols()),
+                  run.finished ? "yes" : "no", run.rmse_deg);
+    }
     if (!out.empty()) write_run(out, pattern, run, !first);
     first = false;
   }

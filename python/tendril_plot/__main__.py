@@ -56,7 +56,8 @@ def main(argv):
                          "(seed_3, _seed3) are drawn as their mean with a band.")
     c.add_argument("runs", nargs="+", help="run directories or directories of runs")
     c.add_argument("--metric", default="rollout/ep_rew_mean",
-                   help="a progress.csv column, or 'eval' for eval.csv's mean return")
+                   help="a progress.csv column, 'eval' for eval.csv's mean return, or "
+                        "'eval:<column>' for another eval.csv column (eval:success_rate)")
     c.add_argument("--x", default="time/total_timesteps", help="progress.csv column on the x axis")
     c.add_argument("--group", choices=["seeds", "none"], default="seeds")
     c.add_argument("--spread", choices=["std", "minmax", "none"], default="std")

@@ -87,12 +87,20 @@ def seed_group(name, parent=""):
 
 
 def curve(run, metric, x_column=STEPS):
-    """(x, y) of one run: a progress.csv column against `x_column`, or with metric "eval" the
-    mean evaluation return (and its std) against timesteps from eval.csv."""
+    """(x, y) of one run: a progress.csv column against `x_column`; with metric "eval" the mean
+    evaluation return (and its std) against timesteps from eval.csv; with "eval:<column>" another
+    eval.csv column (eval:success_rate)."""
     if metric == "eval":
         table = read_csv(os.path.join(run, "eval.csv"))
         x, y = table["timesteps"], table["mean_return"]
         spread = table.get("std_return")
+    elif metric.startswith("eval:"):
+        table = read_csv(os.path.join(run, "eval.csv"))
+        column = metric[len("eval:"):]
+        if column not in table:
+            raise PlotError(f"{run}/eval.csv has no column '{column}' "
+                            f"(it has: {', '.join(sorted(table))})")
+        x, y, spread = table["timesteps"], table[column], None
     else:
         table = read_csv(os.path.join(run, "progress.csv"))
         for column in (metric, x_column):

@@ -87,6 +87,11 @@ TEST(TrackingLoop, StopsAtTheStepBudgetAndCallsTheHookEachStep) {
   const TrackingRun lead_in = track(from_rest, pid, follower, 1000);
   EXPECT_GT(lead_in.first_on_path, 10);
   EXPECT_LT(lead_in.rmse_deg, 5.0);
+  // Stopped before the circle was reached, nothing was tracked: no RMSE, not a perfect one.
+  StepPlant stopped(0.2);
+  const TrackingRun short_of_it = track(stopped, pid, follower, 5);
+  EXPECT_EQ(short_of_it.first_on_path, 5);
+  EXPECT_TRUE(std::isnan(short_of_it.rmse_deg));
 }
 
 }  // namespace

@@ -131,10 +131,13 @@ TEST_F(ModelFile, HeaderThatDoesNotMatchTheWeightsIsRefused) {
   std::string wrong_shape = bytes;
   const std::size_t at = wrong_shape.find("shape: [32, 6]");
   ASSERT_NE(at, std::string::npos);
-  wrong_shape.replace(at, 14, "shape: [32, 7]");
+  // As many values, transposed: the count matches, the shape does not.
+  wrong_shape.replace(at, 14, "shape: [6, 32]");
   const auto reshaped = directory_ / "reshaped.tdm";
   write(reshaped, reseal(wrong_shape));
-  EXPECT_NE(error_message([&] { load_model(reshaped); }).find("has shape [32, 7] in the file"),
+  EXPECT_NE(error_message([&] {
+              load_model(reshaped);
+            }).find("has shape [6, 32] in the file, the architecture [32, 6]"),
             std::string::npos);
 
   std::string unknown_key = bytes;

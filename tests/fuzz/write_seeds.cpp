@@ -1,7 +1,8 @@
 // Writes the binary seeds of the fuzz targets into <directory>/<target>/: a PPO checkpoint and
 // policy (archive_fuzz), a short recorded episode (episode_fuzz), an event file (event_file_fuzz,
 // with its mode byte), a replay buffer (replay_buffer_fuzz), a progress.csv and a pneumatic-arm
-// recording (table_fuzz), each written by the code that writes them for users.
+// recording (table_fuzz) and a learned dynamics model file (model_file_fuzz), each written by the
+// code that writes them for users.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "tendril/core/episode_writer.hpp"
 #include "tendril/core/scalar_log.hpp"
+#include "tendril/dynamics/model_file_format.hpp"
 #include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
 #include "tendril/rl/ppo/ppo.hpp"
 #include "tendril/rl/replay_buffer.hpp"
@@ -24,8 +26,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path root = argv[1];
-  for (const char* target :
-       {"archive_fuzz", "episode_fuzz", "event_file_fuzz", "replay_buffer_fuzz", "table_fuzz"}) {
+  for (const char* target : {"archive_fuzz", "episode_fuzz", "event_file_fuzz",
+                             "replay_buffer_fuzz", "table_fuzz", "model_file_fuzz"}) {
     fs::create_directories(root / target);
   }
 
@@ -96,5 +98,30 @@ int main(int argc, char** argv) {
   const fs::path recording_file = root / "table_fuzz" / "pneumatic.csv";
   fs::remove(recording_file);
   envs::pneumatic::write_pneumatic_dataset(recording_file, recording);
+
+  // A one-layer LSTM of seed 001's layout (4 states, 2 throttles, hidden size 4) with a linear
+  // head: PyTorch's parameter shapes, 212 values as ArchitectureSpec::parameter_count says.
+  dynamics::ModelFileContents model;
+  dynamics::ArchitectureSpec& a = model.description.architecture;
+  a.kind = dynamics::Architecture::kLstm;
+  a.hidden_size = 4;
+  a.layers = 1;
+  a.window = 3;
+  model.description.normalizer = dynamics::Normalizer::identity(6);
+  model.description.state_names = {"theta_x", "theta_y", "omega_x", "omega_y"};
+  model.description.input_names = {"u_x", "u_y"};
+  model.description.sample_period = 0.075;
+  const std::vector<std::pair<std::string, std::vector<int64_t>>> table = {
+      {"lstm.weight_ih_l0", {16, 6}}, {"lstm.weight_hh_l0", {16, 4}}, {"lstm.bias_ih_l0", {16}},
+      {"lstm.bias_hh_l0", {16}},      {"head.weight", {4, 4}},        {"head.bias", {4}}};
+  for (const auto& [name, shape] : table) {
+    int64_t count = 1;
+    for (const int64_t size : shape) count *= size;
+    std::vector<float> values(static_cast<std::size_t>(count));
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = 0.01f * static_cast<float>(i);
+    model.parameters.push_back({name, shape, values});
+  }
+  std::ofstream(root / "model_file_fuzz" / "model.tdm", std::ios::binary)
+      << dynamics::encode_model_file(model);
   return 0;
 }

@@ -5,6 +5,8 @@
 #include "tendril/core/archive.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/vector/threaded_vec_env.hpp"
+#include "tendril/envs/wrappers/episode_statistics.hpp"
 
 namespace tendril::rl {
 namespace {
@@ -45,6 +47,37 @@ TEST(Evaluation, ReplayedActionsRepeatTheClosedLoopEpisode) {
   const std::vector<Action> first(actions.begin(), actions.begin() + 10);
   EXPECT_EQ(replay_actions(first, *env, 1, 7).lengths[0], 10);
   EXPECT_THROW(replay_actions({}, *env, 1, 7), Error);
+}
+
+// Over a vector env, each env runs its share of the episodes whole — the same episodes, one by
+// one, as evaluating each env alone from the same seed — so the short episodes that end first
+// are not favoured. Pendulum's episodes all last 200 steps; the returns differ by start.
+TEST(Evaluation, AVectorEnvRunsEachEnvsShareOfWholeEpisodes) {
+  envs::ThreadedVecEnv vector(3, [](int) -> std::unique_ptr<Env> {
+    return std::make_unique<envs::EpisodeStatistics>(envs::make("Pendulum-v1"));
+  });
+  const DampingPolicy policy(vector.observation_space(), vector.action_space());
+  const EvaluationResult result = evaluate_policy(policy, vector, 7, true, 5);
+  ASSERT_EQ(result.returns.size(), 7u);  // env 0: 2, env 1: 2, env 2: 3 episodes
+  for (int64_t length : result.lengths) EXPECT_EQ(length, 200);
+  // Env i, reset with seed 5 + i and then unseeded, as a single env evaluated alone.
+  std::size_t index = 0;
+  for (int i = 0; i < 3; ++i) {
+    auto single = envs::make("Pendulum-v1");
+    const EvaluationResult alone = evaluate_policy(policy, *single, (7 + i) / 3, true, 5 + i);
+    for (double value : alone.returns) EXPECT_NEAR(result.returns[index++], value, 1e-3) << i;
+  }
+  EXPECT_FALSE(result.success_rate().has_value());  // Pendulum reports no success
+}
+
+TEST(Evaluation, SuccessRateIsTheShareOfEpisodesEndingInSuccess) {
+  EvaluationResult result;
+  result.final_infos.resize(4);
+  result.final_infos[0].set("is_success", 1.0);
+  result.final_infos[1].set("is_success", 0.0);
+  result.final_infos[2].set("is_success", 1.0);
+  // The fourth ended without reporting (a timeout of an env that sets is_success on goals only).
+  EXPECT_DOUBLE_EQ(*result.success_rate(), 0.5);
 }
 
 }  // namespace

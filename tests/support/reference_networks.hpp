@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/torch_networks.hpp"
@@ -78,6 +79,25 @@ inline torch::Tensor standard_normal(Rng& rng, int64_t rows, int64_t cols) {
   float* data = draws.data_ptr<float>();
   for (int64_t i = 0; i < rows * cols; ++i) data[i] = static_cast<float>(rng.normal());
   return draws;
+}
+
+// SB3's SquashedDiagGaussianDistribution on an actor whose output is [μ; log σ] (log σ clamped
+// to [−20, 2]): a = tanh(μ + σ ε), log π = Σ_j log N(u_j; μ_j, σ_j) − Σ_j log(1 − a_j² + 1e-6).
+// Returns a and log π ([batch, 1]).
+inline std::pair<torch::Tensor, torch::Tensor> squashed_gaussian_sample(
+    torch::nn::Sequential& actor, const torch::Tensor& inputs, const torch::Tensor& noise,
+    int64_t actions) {
+  const torch::Tensor head = actor->forward(inputs);
+  const torch::Tensor mean = head.slice(1, 0, actions);
+  const torch::Tensor log_std = torch::clamp(head.slice(1, actions, 2 * actions), -20, 2);
+  const torch::Tensor std = torch::exp(log_std);
+  const torch::Tensor u = mean + std * noise;
+  const torch::Tensor a = torch::tanh(u);
+  const torch::Tensor gaussian =
+      -(u - mean).pow(2) / (2 * std.pow(2)) - log_std - 0.5 * std::log(2 * M_PI);
+  const torch::Tensor log_prob =
+      gaussian.sum(1, /*keepdim=*/true) - torch::log(1 - a.pow(2) + 1e-6).sum(1, true);
+  return {a, log_prob};
 }
 
 // A named statistic of an update (fails the test when it is missing).

@@ -40,7 +40,15 @@ inline Eigen::VectorXf vector_of(const torch::Tensor& values) {
 }
 
 inline torch::Tensor activate(nn::Activation activation, const torch::Tensor& x) {
-  return activation == nn::Activation::kTanh ? torch::tanh(x) : torch::relu(x);
+  switch (activation) {
+    case nn::Activation::kTanh:
+      return torch::tanh(x);
+    case nn::Activation::kRelu:
+      return torch::relu(x);
+    case nn::Activation::kSoftsign:
+      return x / (1 + torch::abs(x));
+  }
+  return x;
 }
 
 // `mlp` with its parameters at theta[offset, offset + count), on x [batch, in].
@@ -91,6 +99,7 @@ struct TorchActorCritic {
     };
     const torch::Tensor policy_latent = trunk(spec.policy_layers, observations);
     head = linear(policy_latent.size(1), spec.action_size, policy_latent);
+    if (spec.policy_output_activation) head = activate(*spec.policy_output_activation, head);
     if (!spec.discrete) {
       log_std = theta.narrow(0, offset, spec.action_size);
       offset += spec.action_size;

@@ -1,5 +1,6 @@
 #include "tendril/adapt/adapt_config.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,118 @@ KMeansOptions read_kmeans_options(const Config& config, KMeansOptions defaults) 
   check(options.max_iterations >= 1, config, "max_iterations", "must be at least 1");
   options.tolerance = config.get_or<double>("tolerance", options.tolerance);
   check(options.tolerance >= 0.0, config, "tolerance", "must be non-negative");
+  config.reject_unknown();
+  return options;
+}
+
+namespace {
+
+HyperparameterSharing read_sharing(const Config& config, HyperparameterSharing fallback) {
+  if (!config.has("sharing")) return fallback;
+  const auto name = config.get<std::string>("sharing");
+  if (name == "per_output") return HyperparameterSharing::per_output;
+  if (name == "shared") return HyperparameterSharing::shared;
+  throw Error("unknown sharing '" + name + "' (expected per_output or shared)",
+              where(config, "sharing"));
+}
+
+int read_count(const Config& config, const char* key, int fallback, int minimum) {
+  const int value = config.get_or<int>(key, fallback);
+  check(value >= minimum, config, key,
+        minimum == 0 ? "must be non-negative" : "must be at least 1");
+  return value;
+}
+
+double read_positive(const Config& config, const char* key, double fallback) {
+  const double value = config.get_or<double>(key, fallback);
+  check(std::isfinite(value) && value > 0.0, config, key, "must be finite and positive");
+  return value;
+}
+
+}  // namespace
+
+GprcaTrialsOptions read_gprca_trials_options(const Config& config, GprcaTrialsOptions defaults) {
+  GprcaTrialsOptions options = defaults;
+  options.max_trials = read_count(config, "max_trials", options.max_trials, 1);
+  options.trials_after_goal = read_count(config, "trials_after_goal", options.trials_after_goal, 0);
+  options.search_between_trials =
+      config.get_or<bool>("search_between_trials", options.search_between_trials);
+  if (config.has("input")) {
+    const auto name = config.get<std::string>("input");
+    if (name == "command") {
+      options.input = CompensatorInput::command;
+    } else if (name == "delta") {
+      options.input = CompensatorInput::delta;
+    } else {
+      throw Error("unknown input '" + name + "' (expected command or delta)",
+                  where(config, "input"));
+    }
+  }
+  CompensationOptions& compensator = options.compensator;
+  compensator.retrain_every = read_count(config, "retrain_every", compensator.retrain_every, 1);
+  compensator.search_every = read_count(config, "search_every", compensator.search_every, 0);
+  compensator.search_below = read_count(config, "search_below", compensator.search_below, 0);
+  compensator.sharing = read_sharing(config, compensator.sharing);
+  compensator.seed = config.get_or<uint64_t>("seed", compensator.seed);
+  if (config.has("gp")) compensator.gp = read_gp_options(config.child("gp"), compensator.gp);
+  return options;  // steps_per_trial: the caller's, then reject_unknown
+}
+
+BoacOptions read_boac_options(const Config& config, BoacOptions defaults) {
+  BoacOptions options = defaults;
+  if (config.has("oracle")) {
+    const auto name = config.get<std::string>("oracle");
+    check(name == "closed_loop" || name == "open_loop", config, "oracle",
+          "must be closed_loop or open_loop");
+    options.oracle_open_loop = name == "open_loop";
+  }
+  options.oracle_trials = read_count(config, "oracle_trials", options.oracle_trials, 1);
+  options.best_trials = read_count(config, "best_trials", options.best_trials, 1);
+  check(options.best_trials <= options.oracle_trials, config, "best_trials",
+        "must not exceed oracle_trials");
+  options.oracle_steps = read_count(config, "oracle_steps", options.oracle_steps, 1);
+  options.coach_episodes = read_count(config, "coach_episodes", options.coach_episodes, 1);
+  if (config.has("profiles_mm")) {
+    options.profiles = config.get<std::vector<double>>("profiles_mm");
+    check(!options.profiles.empty(), config, "profiles_mm", "needs at least one radius");
+    for (double radius : options.profiles) {
+      check(std::isfinite(radius) && radius > 0.0, config, "profiles_mm",
+            "radii must be finite and positive");
+    }
+  }
+  options.local_flag = read_positive(config, "local_flag_mm", options.local_flag);
+  options.batch = read_count(config, "batch", options.batch, 1);
+  options.hold_steps = read_count(config, "hold_steps", options.hold_steps, 0);
+  options.max_trials_per_profile =
+      read_count(config, "max_trials_per_profile", options.max_trials_per_profile, 1);
+  options.max_trials = read_count(config, "max_trials", options.max_trials, 1);
+  options.offset_bound = read_positive(config, "offset_bound_mm", options.offset_bound);
+  options.collision_penalty =
+      config.get_or<double>("collision_penalty_mm", options.collision_penalty);
+  check(options.collision_penalty >= 0.0, config, "collision_penalty_mm", "must be non-negative");
+  options.sharing = read_sharing(config, options.sharing);
+  options.coach.time_weight =
+      config.get_or<double>("time_weight_mm_per_step", options.coach.time_weight);
+  check(options.coach.time_weight >= 0.0, config, "time_weight_mm_per_step",
+        "must be non-negative");
+  options.coach.min_visit_fraction =
+      config.get_or<double>("min_visit_fraction", options.coach.min_visit_fraction);
+  check(options.coach.min_visit_fraction >= 0.0 && options.coach.min_visit_fraction <= 1.0, config,
+        "min_visit_fraction", "must lie in [0, 1]");
+  if (config.has("kmeans")) {
+    options.coach.kmeans = read_kmeans_options(config.child("kmeans"), options.coach.kmeans);
+  }
+  if (config.has("student"))
+    options.student = read_gp_options(config.child("student"), options.student);
+  if (config.has("bayes_opt")) {
+    BayesOptOptions bounded = options.bayes_opt;
+    bounded.lower = Eigen::VectorXd::Constant(3, -options.offset_bound);
+    bounded.upper = Eigen::VectorXd::Constant(3, options.offset_bound);
+    const Config bayes_opt = config.child("bayes_opt");
+    check(!bayes_opt.has("lower") && !bayes_opt.has("upper"), config, "bayes_opt",
+          "takes its bounds from offset_bound_mm, not lower/upper");
+    options.bayes_opt = read_bayes_opt_options(bayes_opt, bounded);
+  }
   config.reject_unknown();
   return options;
 }

@@ -1,5 +1,6 @@
 #include "tendril/adapt/gprca.hpp"
 
+#include <chrono>
 #include <string>
 
 #include "tendril/core/error.hpp"
@@ -42,7 +43,8 @@ GprcaCompensator::GprcaCompensator(int action_dim, int observation_dim, Compensa
   require(options_.steps_per_episode >= 1, "steps_per_episode must be at least 1",
           "GprcaCompensator");
   require(options_.retrain_every >= 1, "retrain_every must be at least 1", "GprcaCompensator");
-  require(options_.search_every >= 1, "search_every must be at least 1", "GprcaCompensator");
+  require(options_.search_every >= 0, "search_every must be non-negative", "GprcaCompensator");
+  require(options_.search_below >= 0, "search_below must be non-negative", "GprcaCompensator");
 }
 
 Eigen::VectorXd GprcaCompensator::compensation(const Eigen::VectorXd& action) const {
@@ -57,8 +59,15 @@ void GprcaCompensator::retrain() {
     gp_.add(pending_actions_.row(i).transpose(), pending_errors_.row(i).transpose());
   }
   pending_ = 0;
-  if (retrains_ % options_.search_every == 0) gp_.optimize_hyperparameters(rng_);
+  const bool scheduled = options_.search_every > 0 && retrains_ % options_.search_every == 0;
+  if (scheduled || gp_.size() <= options_.search_below) gp_.optimize_hyperparameters(rng_);
   ++retrains_;
+}
+
+double GprcaCompensator::search_hyperparameters() {
+  const auto start = std::chrono::steady_clock::now();
+  if (gp_.size() > 0) gp_.optimize_hyperparameters(rng_);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 std::vector<CompensationStep> GprcaCompensator::run_episode(const CompensationLoop& loop) {
@@ -80,12 +89,15 @@ std::vector<CompensationStep> GprcaCompensator::run_episode(const CompensationLo
     // eq. (5): D ← D ∪ (τ_t, e_{t+1}), e_{t+1} = x̂_{t+1} − x_{t+1}.
     pending_actions_.row(pending_) = step.action.transpose();
     pending_errors_.row(pending_) = (step.prediction - step.next_observation).transpose();
+    const auto start = std::chrono::steady_clock::now();
     if (++pending_ == options_.retrain_every) {
       retrain();
       step.retrained = true;
     }
     // Alg. 2 line 5: c_{t+1} = G(π_θ(s_t)).
     compensation = this->compensation(step.action);
+    step.update_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     previous = observation;
     observation = step.next_observation;
     steps.push_back(std::move(step));

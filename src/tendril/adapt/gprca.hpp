@@ -35,9 +35,12 @@ GpOptions default_compensator_options();
 struct CompensationOptions {
   int steps_per_episode = 100;  // L_E (seed 002: 100 in S0–S1, 150 in S2–S4)
   int retrain_every = 5;        // n_B: steps between retrains
-  // Hyper-parameter search at every `search_every`-th retrain (warm-started from the last);
-  // between searches a retrain conditions the GP on the new points only, O(n²) each.
+  // Hyper-parameter search at every `search_every`-th retrain (warm-started from the last; 0:
+  // never inside an episode), and at every retrain while the GP holds at most `search_below`
+  // points (cheap there). Between searches a retrain conditions the GP on the new points only,
+  // O(n²) each. search_hyperparameters() searches between episodes.
   int search_every = 1;
+  int search_below = 0;
   // The compensator: one GP per observation dimension, the action as input. A window keeps
   // the latest points.
   GpOptions gp = default_compensator_options();
@@ -53,6 +56,9 @@ struct CompensationStep {
   Eigen::VectorXd prediction;        // x̂_{t+1} = F_φ([x_t, x_{t−1}], τ_t)
   Eigen::VectorXd next_observation;  // x_{t+1}, the robot's
   bool retrained = false;            // whether the compensator was retrained after this step
+  // Wall time of the compensator's work after the step: the retrain (when due) and the
+  // prediction of c_{t+1} — what must fit in the control period.
+  double update_seconds = 0.0;
 };
 
 // GPRCA, the Gaussian-process recurrent cerebellar architecture of seed 002 (Nazeer et al.,
@@ -72,6 +78,9 @@ class GprcaCompensator {
 
   // G's prediction for an action (zero before the first retrain).
   Eigen::VectorXd compensation(const Eigen::VectorXd& action) const;
+  // Maximises the likelihood over the hyper-parameters on the points held (between episodes,
+  // while the robot is reset); no-op without points. Returns the wall time, s.
+  double search_hyperparameters();
   const MultiOutputGp& gp() const { return gp_; }
   int retrains() const { return retrains_; }
 

@@ -1,5 +1,6 @@
 #include "tendril/control/tracking_loop.hpp"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,7 @@ TrackingRun track(TrackedLimb& limb, TrackingController& controller, WaypointFol
   run.first_on_path = first_on_path < 0 ? n : first_on_path;
   run.rmse_deg = run.first_on_path < n
                      ? tracking_rmse(run.angles.rightCols(n - run.first_on_path), follower.points())
-                     : 0.0;
+                     : std::numeric_limits<double>::quiet_NaN();
   return run;
 }
 

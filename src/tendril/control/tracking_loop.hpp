@@ -58,7 +58,9 @@ struct TrackingRun {
   // The first step after the path's first point was reached: the steps before bring the limb
   // from wherever it rests onto the path and are not tracking.
   Eigen::Index first_on_path = 0;
-  double rmse_deg = 0.0;  // tracking_rmse of angles[first_on_path:] to the follower's path
+  // tracking_rmse of angles[first_on_path:] to the follower's path; NaN when the path's first
+  // point was never reached (nothing was tracked).
+  double rmse_deg = 0.0;
 };
 
 // Resets the limb, the controller and the follower, then each step: advance the follower on the

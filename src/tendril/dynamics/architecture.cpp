@@ -95,12 +95,20 @@ ArchitectureSpec ArchitectureSpec::from_config(const Config& model, int state_di
 }
 
 void ArchitectureSpec::validate() const {
-  require(state_dim >= 1, "needs at least one state column", "state_dim");
-  require(input_dim >= 0, "must not be negative", "input_dim");
-  require(hidden_size >= 1, "must be at least 1, got " + std::to_string(hidden_size),
-          "hidden_size");
-  require(layers >= 1, "must be at least 1, got " + std::to_string(layers), "layers");
-  require(window >= 1, "must be at least 1, got " + std::to_string(window), "window");
+  // The upper limits lie far above any robot model (the thesis' largest: 512 × 3, window 100)
+  // and keep parameter_count() and every tensor size within 64-bit integers, whatever a file's
+  // header claims.
+  auto within = [](int value, int low, int high, const std::string& name) {
+    require(value >= low && value <= high,
+            "must lie in [" + std::to_string(low) + ", " + std::to_string(high) + "], got " +
+                std::to_string(value),
+            name);
+  };
+  within(state_dim, 1, kMaxColumns, "state_dim");
+  within(input_dim, 0, kMaxColumns, "input_dim");
+  within(hidden_size, 1, kMaxHiddenSize, "hidden_size");
+  within(layers, 1, kMaxLayers, "layers");
+  within(window, 1, kMaxWindow, "window");
   require(output_bound > 0.0, "must be positive", "output_bound");
   require(dropout >= 0.0 && dropout < 1.0, "must lie in [0, 1)", "dropout");
   if (kind == Architecture::kSeq2SeqAttention) {

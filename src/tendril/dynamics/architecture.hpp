@@ -47,6 +47,11 @@ Normalization parse_normalization(const std::string& name, const std::string& wh
 //     dropout: 0.0              # softsign_lstm: after the LSTM layer (seed 002: 0.3)
 //     normalization: standard   # standard | minmax | none (softsign_lstm default: minmax)
 struct ArchitectureSpec {
+  static constexpr int kMaxColumns = 1024;
+  static constexpr int kMaxHiddenSize = 8192;
+  static constexpr int kMaxLayers = 32;
+  static constexpr int kMaxWindow = 100000;
+
   Architecture kind = Architecture::kLstm;
   int state_dim = 4;
   int input_dim = 2;
@@ -60,7 +65,7 @@ struct ArchitectureSpec {
 
   // Reads the `model:` mapping; state and input sizes come from the data.
   static ArchitectureSpec from_config(const Config& model, int state_dim, int input_dim);
-  // Raises Error naming the offending field.
+  // Raises Error naming the offending field (a size out of its range above among them).
   void validate() const;
 
   // Seed 001's networks predict the change Δx in the data's units (thesis eq. 4.3); seed 002's

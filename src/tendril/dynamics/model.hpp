@@ -6,25 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "tendril/dynamics/architecture.hpp"
-#include "tendril/dynamics/normalizer.hpp"
+#include "tendril/dynamics/model_description.hpp"
 #include "tendril/dynamics/sequence_network.hpp"
 #include "tendril/envs/learned/dynamics_model.hpp"
 
 namespace tendril::dynamics {
-
-// What a trained model is, apart from its weights: the network's shape, the columns it reads and
-// predicts, how it normalises them, and the data's sampling period. Stored in the model file.
-struct ModelDescription {
-  ArchitectureSpec architecture;
-  Normalizer normalizer;  // columns of a row [x, u]
-  std::vector<std::string> state_names;
-  std::vector<std::string> input_names;
-  double sample_period = 0.0;  // seconds
-
-  // Raises Error naming `where` unless the parts agree with each other.
-  void validate(const std::string& where) const;
-};
 
 // A learned dynamics model: a network with its normalisation, predicting x̂_{t+1} from windows of
 // physical rows [x, u] (envs::DynamicsModel). The windows-to-network path is shared by training

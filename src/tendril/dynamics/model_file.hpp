@@ -7,18 +7,9 @@ namespace tendril::dynamics {
 
 class Model;
 
-// A trained model in one self-describing file (a Python user can read it without tendril):
-//
-//   tendril dynamics model\n
-//   format 1\n
-//   header_bytes <H>\n
-//   <H bytes of YAML: architecture, column names, sampling period, normalisation (numbers as the
-//    shortest decimal text that reads back exactly), and the parameter table (name, shape)>
-//   payload_bytes <P>\n
-//   <P bytes: every parameter as little-endian float32, row-major, in the table's order>
-//   crc32c <8 hex digits>\n      CRC-32C of every byte before this line
-//
-// The file alone rebuilds the model: no experiment file is needed.
+// A trained model in one self-describing file; the layout is in model_file_format.hpp, which
+// reads and writes it without LibTorch. The file alone rebuilds the model: no experiment file is
+// needed.
 inline constexpr const char* kModelFileName = "model.tdm";
 
 // Writes `model` to `file` atomically. Raises Error if `file` exists, unless `replace` (a run

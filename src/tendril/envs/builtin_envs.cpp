@@ -15,6 +15,7 @@
 #include "tendril/envs/safe_control/double_integrator.hpp"
 #include "tendril/envs/safe_control/dubins_car.hpp"
 #include "tendril/envs/sma_limb/learned_reach_env.hpp"
+#include "tendril/envs/sma_limb/learned_reach_vec_env.hpp"
 #include "tendril/envs/sma_limb/learned_safety_env.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
 #include "tendril/envs/ur5/ur5_reach.hpp"
@@ -68,9 +69,11 @@ void register_builtin_envs(Registry& registry) {
   registry.add({safe_control::DubinsCar::kId, &safe_control::DubinsCar::create, std::nullopt,
                 "Dubins car to a goal past a keep-out disc (safety filter)"});
   // Its reaching task inside a learned model of the limb (seed 001 §5.1.1), 250 steps.
+  // N of them step through one batched model call (make_vector, used by training).
   registry.add({sma_limb::LearnedReachEnv::kId, &sma_limb::LearnedReachEnv::create,
                 sma_limb::LearnedReachEnv::kEpisodeSteps,
-                "SMA limb reaches a goal angle inside a learned model of the limb"});
+                "SMA limb reaches a goal angle inside a learned model of the limb",
+                &sma_limb::LearnedReachVecEnv::create});
   // Its safety agent's environment inside a learned model of the limb (seed 001 §6.5.2),
   // truncated at its own configured horizon.
   registry.add({sma_limb::LearnedSafetyEnv::kId, &sma_limb::LearnedSafetyEnv::create, std::nullopt,

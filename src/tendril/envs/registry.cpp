@@ -4,6 +4,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/envs/builtin_envs.hpp"
+#include "tendril/envs/vector/vec_env.hpp"
 #include "tendril/envs/wrappers/curriculum.hpp"
 #include "tendril/envs/wrappers/time_limit.hpp"
 
@@ -55,8 +56,7 @@ std::vector<std::string> Registry::ids() const {
   return names;
 }
 
-std::unique_ptr<Env> Registry::make(std::string_view id, const Config& params) const {
-  const EnvSpec& found = spec(id);
+std::optional<int64_t> Registry::time_limit(const EnvSpec& found, const Config& params) const {
   std::optional<int64_t> limit = found.max_episode_steps;
   if (params.has("max_episode_steps")) {
     limit = params.get<int64_t>("max_episode_steps");
@@ -64,6 +64,26 @@ std::unique_ptr<Env> Registry::make(std::string_view id, const Config& params) c
             params.source() + ": " + (params.path().empty() ? "" : params.path() + ".") +
                 "max_episode_steps");
   }
+  return limit;
+}
+
+std::unique_ptr<VecEnv> Registry::make_vector(std::string_view id, const Config& params,
+                                              int num_envs) const {
+  const EnvSpec& found = spec(id);
+  if (!found.vector_factory || params.has("curriculum")) return nullptr;
+  const std::optional<int64_t> limit = time_limit(found, params);
+  std::unique_ptr<VecEnv> env = found.vector_factory(params, num_envs, limit);
+  try {
+    params.reject_unknown();
+  } catch (const Error& e) {
+    throw Error(e.what_wrong() + ", not a parameter of environment '" + found.id + "'", e.where());
+  }
+  return env;
+}
+
+std::unique_ptr<Env> Registry::make(std::string_view id, const Config& params) const {
+  const EnvSpec& found = spec(id);
+  const std::optional<int64_t> limit = time_limit(found, params);
   std::unique_ptr<Env> env = found.factory(params);
   if (params.has("curriculum")) {
     const CurriculumRule rule = CurriculumRule::from_config(params.child("curriculum"));
@@ -94,6 +114,10 @@ const Registry& builtin_registry() {
 
 std::unique_ptr<Env> make(std::string_view id, const Config& params) {
   return builtin_registry().make(id, params);
+}
+
+std::unique_ptr<VecEnv> make_vector(std::string_view id, const Config& params, int num_envs) {
+  return builtin_registry().make_vector(id, params, num_envs);
 }
 
 std::vector<std::string> registered_ids() { return builtin_registry().ids(); }

@@ -14,6 +14,8 @@
 
 namespace tendril::envs {
 
+class VecEnv;
+
 // How to build one registered environment.
 struct EnvSpec {
   // Versioned id, "Name-v<N>" or "Family/Name-v<N>"; a change of dynamics, reward or limits
@@ -26,6 +28,12 @@ struct EnvSpec {
   std::optional<int64_t> max_episode_steps;
   // One line for `tendril list-envs`.
   std::string summary;
+  // Optional: N environments of this id as one VecEnv that steps them together (a batched
+  // learned model), behaving as N `make(id)` envs with episode statistics in a ThreadedVecEnv;
+  // gets the time limit the single env would get.
+  std::function<std::unique_ptr<VecEnv>(const Config& params, int num_envs,
+                                        std::optional<int64_t> max_episode_steps)>
+      vector_factory = nullptr;
 };
 
 // Environment ids → factories. Filled explicitly (see builtin_envs.hpp), never by static
@@ -47,8 +55,13 @@ class Registry {
   // Every other key of `params` must be read by the factory: an unknown one raises Error naming it
   // and the environment.
   std::unique_ptr<Env> make(std::string_view id, const Config& params = Config()) const;
+  // `num_envs` envs of `id` through its vector_factory, with the parameters `make` reads;
+  // nullptr when the id has none or `params` asks for a curriculum (per-env wrappers).
+  std::unique_ptr<VecEnv> make_vector(std::string_view id, const Config& params,
+                                      int num_envs) const;
 
  private:
+  std::optional<int64_t> time_limit(const EnvSpec& spec, const Config& params) const;
   std::map<std::string, EnvSpec, std::less<>> specs_;
 };
 
@@ -58,6 +71,7 @@ const Registry& builtin_registry();
 
 // builtin_registry().make(id, params) and builtin_registry().ids().
 std::unique_ptr<Env> make(std::string_view id, const Config& params = Config());
+std::unique_ptr<VecEnv> make_vector(std::string_view id, const Config& params, int num_envs);
 std::vector<std::string> registered_ids();
 
 }  // namespace tendril::envs

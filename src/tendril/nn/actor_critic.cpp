@@ -27,6 +27,8 @@ Eigen::Map<const Eigen::MatrixXf> as_matrix(const Eigen::Ref<const Eigen::RowVec
 ActorCritic::ActorCritic(const ActorCriticSpec& spec) : spec_(spec) {
   require(spec.observation_size > 0, "observation size must be positive", kWhere);
   require(spec.action_size > 0, "action size must be positive", kWhere);
+  require(!(spec.discrete && spec.policy_output_activation),
+          "an output activation applies to a Gaussian mean, not to categorical logits", kWhere);
   int64_t offset = 0;
   const auto place = [&](DenseMlp mlp) {
     Placed placed{std::move(mlp), offset};
@@ -42,7 +44,11 @@ ActorCritic::ActorCritic(const ActorCriticSpec& spec) : spec_(spec) {
   policy_trunk_ = trunk(spec.policy_layers);
   const int64_t policy_latent =
       spec.policy_layers.empty() ? spec.observation_size : spec.policy_layers.back();
-  policy_head_ = place(DenseMlp({policy_latent, spec.action_size}, spec.activation));
+  // A head with an output activation is a one-layer trunk of that activation.
+  policy_head_ =
+      place(spec.policy_output_activation
+                ? DenseMlp::trunk({policy_latent, spec.action_size}, *spec.policy_output_activation)
+                : DenseMlp({policy_latent, spec.action_size}, spec.activation));
   if (!spec.discrete) {
     log_std_offset_ = offset;
     offset += spec.action_size;

@@ -42,6 +42,13 @@ ActorCriticSpec ActorCriticSpec::from_config(const Config& policy,
   spec.activation =
       parse_activation(policy.get_or<std::string>("activation", activation_name(spec.activation)),
                        policy.where("activation"));
+  if (policy.has("pi_output_activation")) {
+    const std::string name = policy.get<std::string>("pi_output_activation");
+    spec.policy_output_activation.reset();
+    if (name != "none") {
+      spec.policy_output_activation = parse_activation(name, policy.where("pi_output_activation"));
+    }
+  }
   spec.orthogonal_init = policy.get_or<bool>("ortho_init", spec.orthogonal_init);
   spec.log_std_init = policy.get_or<double>("log_std_init", spec.log_std_init);
   return spec;

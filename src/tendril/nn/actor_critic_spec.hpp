@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "tendril/core/config.hpp"
@@ -22,6 +23,9 @@ struct ActorCriticSpec {
   // One trunk (policy_layers) feeding both heads, instead of one trunk each.
   bool shared_trunk = false;
   Activation activation = Activation::kTanh;
+  // A squashing activation on the Gaussian mean (the policy head's output): none by default, as
+  // SB3; seed 002's actor has softsign "at input, hidden and output layers" (§IV-A3).
+  std::optional<Activation> policy_output_activation;
   bool orthogonal_init = true;
   double log_std_init = 0.0;
 
@@ -32,7 +36,8 @@ struct ActorCriticSpec {
   // Reads the architecture from the `policy` mapping of an algorithm config over `fallback`:
   //   net_arch: [64, 64]        layers of both trunks (or of the shared trunk)
   //   pi_layers, vf_layers      per-trunk layers, overriding net_arch
-  //   shared_trunk: false, activation: tanh|relu, ortho_init: true, log_std_init: 0.0
+  //   shared_trunk: false, activation: tanh|relu|softsign, ortho_init: true, log_std_init: 0.0
+  //   pi_output_activation: none|tanh|relu|softsign (the Gaussian mean's; none by default)
   // Unknown keys are rejected by the caller's reject_unknown().
   static ActorCriticSpec from_config(const Config& policy, const ActorCriticSpec& fallback);
   static ActorCriticSpec from_config(const Config& policy);  // over the defaults

@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "tendril/core/error.hpp"
+#include "tendril/core/info_keys.hpp"
 
 namespace tendril::rl {
 
@@ -18,6 +19,18 @@ double EvaluationResult::std_return() const {
   double sum = 0.0;
   for (double r : returns) sum += (r - mean) * (r - mean);
   return std::sqrt(sum / static_cast<double>(returns.size()));
+}
+
+std::optional<double> EvaluationResult::success_rate() const {
+  int reported = 0, successes = 0;
+  for (const Info& info : final_infos) {
+    if (const auto success = info.get(info_keys::kIsSuccess)) {
+      ++reported;
+      if (*success > 0.5) ++successes;
+    }
+  }
+  if (reported == 0) return std::nullopt;
+  return static_cast<double>(successes) / static_cast<double>(final_infos.size());
 }
 
 EvaluationResult evaluate_policy(const Policy& policy, Env& env, int episodes, bool deterministic,
@@ -41,6 +54,50 @@ EvaluationResult evaluate_policy(const Policy& policy, Env& env, int episodes, b
     }
     result.returns.push_back(episode_return);
     result.lengths.push_back(length);
+  }
+  return result;
+}
+
+EvaluationResult evaluate_policy(const Policy& policy, envs::VecEnv& env, int episodes,
+                                 bool deterministic, uint64_t seed) {
+  require(episodes >= 1, "episodes must be at least 1", "rl::evaluate_policy");
+  const int n = env.num_envs();
+  Rng rng(seed, /*stream=*/1);
+  std::vector<int> quota(n), done(n, 0);
+  std::vector<double> returns(n, 0.0);
+  std::vector<int64_t> lengths(n, 0);
+  std::vector<EvaluationResult> per_env(n);
+  for (int i = 0; i < n; ++i) quota[i] = (episodes + i) / n;
+  envs::BatchMatrix observations = env.reset(seed), actions;
+  auto unfinished = [&] {
+    for (int i = 0; i < n; ++i) {
+      if (done[i] < quota[i]) return true;
+    }
+    return false;
+  };
+  while (unfinished()) {
+    policy.act(observations, deterministic, rng, actions);
+    const envs::VecStep& step = env.step(actions);
+    for (int i = 0; i < n; ++i) {
+      if (done[i] >= quota[i]) continue;
+      returns[i] += step.rewards[i];
+      ++lengths[i];
+      if (step.done(i)) {
+        per_env[i].returns.push_back(returns[i]);
+        per_env[i].lengths.push_back(lengths[i]);
+        per_env[i].final_infos.push_back(step.infos[i]);
+        returns[i] = 0.0;
+        lengths[i] = 0;
+        ++done[i];
+      }
+    }
+    observations = step.observations;
+  }
+  EvaluationResult result;
+  for (EvaluationResult& part : per_env) {
+    result.returns.insert(result.returns.end(), part.returns.begin(), part.returns.end());
+    result.lengths.insert(result.lengths.end(), part.lengths.begin(), part.lengths.end());
+    for (Info& info : part.final_infos) result.final_infos.push_back(std::move(info));
   }
   return result;
 }

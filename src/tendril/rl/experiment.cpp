@@ -48,6 +48,15 @@ Experiment Experiment::from_config(Config config) {
   require(e.eval_record >= 0 && e.eval_record <= e.eval_episodes,
           "must lie in [0, eval.episodes] (it is " + std::to_string(e.eval_record) + ")",
           key(eval, "record"));
+  e.eval_n_envs = eval.get_or<int>("n_envs", 1);
+  require(e.eval_n_envs >= 1, "must be at least 1", key(eval, "n_envs"));
+  require(e.eval_n_envs == 1 || (e.eval_record == 0 && !e.env.normalize_observation),
+          "evaluating over several envs needs raw observations and no recording (eval.record 0)",
+          key(eval, "n_envs"));
+  const Config eval_env = eval.child("env");
+  for (const std::string& name : eval_env.keys()) {
+    e.eval_env_overrides.emplace_back(name, eval_env.get<std::string>(name));
+  }
   e.checkpoint_freq = config.get_or<int64_t>("checkpoint_freq", 0);
   require(e.checkpoint_freq >= 0, "must be non-negative", key(config, "checkpoint_freq"));
   e.save_replay_buffer = config.get_or<bool>("save_replay_buffer", false);
@@ -68,9 +77,19 @@ Experiment Experiment::from_config(Config config) {
   } catch (const std::bad_alloc&) {
     throw Error(out_of_memory_message(e), config.source());
   }
+  // An evaluation environment once, so that eval.env's keys are checked too.
+  if (!e.eval_env_overrides.empty()) make_env(evaluation_env_options(e));
   // Last: the environment's own parameters are read by the environment.
   config.reject_unknown();
   return e;
+}
+
+VecEnvOptions evaluation_env_options(const Experiment& experiment) {
+  VecEnvOptions options = experiment.env;
+  if (experiment.eval_env_overrides.empty()) return options;
+  options.params = Config::parse(experiment.env.params.dump(), experiment.config.source());
+  for (const auto& [name, value] : experiment.eval_env_overrides) options.params.set(name, value);
+  return options;
 }
 
 std::string out_of_memory_message(const Experiment& experiment) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "tendril/core/config.hpp"
 #include "tendril/envs/vector/vec_env.hpp"
@@ -28,7 +29,9 @@ namespace tendril::rl {
 //   algo: {...}                    # the algorithm's keys (preset + overrides)
 //   n_timesteps: 500000
 //   seed: 0
-//   eval: {freq: 50000, episodes: 10, deterministic: true, save_best: false, record: 0}
+//   eval: {freq: 50000, episodes: 10, deterministic: true, save_best: false, record: 0,
+//          n_envs: 1,                          # envs the episodes are spread over
+//          env: {dynamic_tolerance: false}}   # env.params changed for evaluation (scalars)
 //   checkpoint_freq: 100000        # environment steps between checkpoints; 0: none
 //   save_replay_buffer: false      # off-policy: keep the replay buffer with the checkpoint
 //   output: runs/ppo_pendulum      # where new runs go (a timestamp is appended)
@@ -51,6 +54,13 @@ struct Experiment {
   // into the run's episodes/ as eval_<steps>_<NNNN>.tep (docs/episode_format.md) for
   // `tendril serve` and `tendril plot episode`.
   int eval_record = 0;
+  // Evaluations over this many envs of one vector env (batched policy and, where the env has it,
+  // batched model calls; rl::evaluate_policy on a VecEnv); 1: one env, episode after episode.
+  // More than 1 needs raw observations (no normalize_observation) and no recording.
+  int eval_n_envs = 1;
+  // Scalar env.params set otherwise for evaluation (key, YAML text): e.g. seed 001's success
+  // rate at the final goal tolerance while training shrinks it.
+  std::vector<std::pair<std::string, std::string>> eval_env_overrides;
   int64_t checkpoint_freq = 0;
   bool save_replay_buffer = false;
   std::string output;
@@ -63,6 +73,10 @@ struct Experiment {
 // What an allocation failure (std::bad_alloc) while building or training the experiment is
 // about, named as the config names the sizes that decide it.
 std::string out_of_memory_message(const Experiment& experiment);
+
+// The environment options of evaluations: the experiment's, with eval.env's parameters set on a
+// copy of env.params.
+VecEnvOptions evaluation_env_options(const Experiment& experiment);
 
 // The algorithm named in the experiment, on `env`.
 std::unique_ptr<Algorithm> make_algorithm(const Experiment& experiment, envs::VecEnv& env);

@@ -17,10 +17,14 @@ double seconds_since(Clock::time_point start) {
 }  // namespace
 
 OffPolicyAlgorithm::OffPolicyAlgorithm(std::string name, envs::VecEnv& env,
-                                       const OffPolicyConfig& common, uint64_t seed)
+                                       const OffPolicyConfig& common, uint64_t seed,
+                                       int64_t stored_observation_size)
     : Algorithm(std::move(name), env, seed),
       common_(common),
-      buffer_(common.buffer_size, env.observation_space().size(), env.action_space().size()) {
+      buffer_(
+          common.buffer_size,
+          stored_observation_size >= 0 ? stored_observation_size : env.observation_space().size(),
+          env.action_space().size()) {
   common_.validate(this->name() + " config");
   const Space& actions = env.action_space();
   require(actions.is_discrete() || actions.bounded(),
@@ -57,17 +61,18 @@ void OffPolicyAlgorithm::collect(Progress& progress, const Observers& observers)
     env_action_columns_ = actions_;
     scale_to_bounds(space, env_action_columns_);
     env_actions_ = env_action_columns_.transpose();
+    store_observations(observations, stored_);
     progress.inference_seconds += seconds_since(start);
 
     start = Clock::now();
-    const Eigen::MatrixXf observed = observations;
     const envs::VecStep& step = step_environments(env_actions_, observers);
     progress.env_seconds += seconds_since(start);
 
     start = Clock::now();
+    store_observations(step.final_observations.transpose(), stored_next_);
     for (int i = 0; i < n_envs; ++i) {
-      buffer_.add(observed.col(i), actions_.col(i), step.rewards[i],
-                  step.final_observations.row(i).transpose(), step.terminated[i] != 0);
+      buffer_.add(stored_.col(i), actions_.col(i), step.rewards[i], stored_next_.col(i),
+                  step.terminated[i] != 0);
       if (step.done(i)) episode_ended(i);
     }
     after_step();

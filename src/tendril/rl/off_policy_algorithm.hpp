@@ -47,8 +47,10 @@ class OffPolicyAlgorithm : public Algorithm {
   }
 
  protected:
+  // `stored_observation_size`: the size of what store_observations makes of an observation
+  // (−1: the observation's own size).
   OffPolicyAlgorithm(std::string name, envs::VecEnv& env, const OffPolicyConfig& common,
-                     uint64_t seed);
+                     uint64_t seed, int64_t stored_observation_size = -1);
 
   // The exploratory actions for collecting experience, with the algorithm's exploration
   // (sampling, action noise, ε-greedy): `observations` has one column per env, `actions` gets
@@ -58,6 +60,13 @@ class OffPolicyAlgorithm : public Algorithm {
   // `gradient_steps` updates from the replay buffer; `progress_remaining` runs from 1 to 0 over
   // the budget (for schedules).
   virtual TrainStats train(int64_t gradient_steps, double progress_remaining) = 0;
+  // What the replay buffer keeps of observations (one per column): the observations
+  // themselves, or what a frozen policy head makes of them, computed once instead of at every
+  // update (SAC with a frozen head).
+  virtual void store_observations(const Eigen::Ref<const Eigen::MatrixXf>& observations,
+                                  Eigen::MatrixXf& stored) {
+    stored = observations;
+  }
   // Env `env_index`'s episode ended (resets per-env exploration noise).
   virtual void episode_ended(int env_index) { (void)env_index; }
   // After every vector-env step (exploration schedules, step-counted target updates).
@@ -90,6 +99,7 @@ class OffPolicyAlgorithm : public Algorithm {
   ReplayBuffer buffer_;
   const ReplayBuffer* training_buffer_ = nullptr;  // set during train_on
   Eigen::MatrixXf actions_, env_action_columns_;   // action_size × n_envs
+  Eigen::MatrixXf stored_, stored_next_;           // what the buffer keeps, × n_envs
   envs::BatchMatrix env_actions_;
   int64_t updates_ = 0;
 };

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "tendril/core/error.hpp"
+#include "tendril/nn/mlp_archive.hpp"
 #include "tendril/rl/actor_critic_policy.hpp"
 #include "tendril/rl/dqn/q_greedy_policy.hpp"
 #include "tendril/rl/sac/squashed_gaussian_policy.hpp"
@@ -133,23 +134,11 @@ std::unique_ptr<Policy> load_policy_bytes(std::string bytes, const std::string& 
 }
 
 void write_mlp(ArchiveWriter& writer, const std::string& prefix, const nn::DenseMlp& mlp) {
-  writer.put_doubles(prefix + "_sizes",
-                     std::vector<double>(mlp.sizes().begin(), mlp.sizes().end()));
-  writer.put(prefix + "_activation", nn::activation_name(mlp.hidden_activation()));
-  writer.put(prefix + "_tanh_output", int64_t{mlp.tanh_output()});
+  nn::write_dense_mlp(writer, prefix, mlp);
 }
 
 nn::DenseMlp read_mlp(const ArchiveReader& reader, const std::string& prefix) {
-  const std::vector<double> sizes = reader.get_doubles(prefix + "_sizes");
-  for (double size : sizes) {
-    if (!(size >= 1 && size <= 1e6) || size != static_cast<double>(static_cast<int64_t>(size))) {
-      throw Error("implausible layer size in '" + prefix + "_sizes'", reader.name());
-    }
-  }
-  return nn::DenseMlp(
-      std::vector<int64_t>(sizes.begin(), sizes.end()),
-      nn::parse_activation(reader.get_string(prefix + "_activation"), reader.name()),
-      reader.get_int(prefix + "_tanh_output") != 0);
+  return nn::read_dense_mlp(reader, prefix);
 }
 
 void write_space(ArchiveWriter& writer, const std::string& prefix, const Space& space) {

@@ -1,5 +1,6 @@
 #include "tendril/rl/training_observers.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include "tendril/core/interrupt.hpp"
 #include "tendril/envs/wrappers/episode_recorder.hpp"
 #include "tendril/rl/trainer.hpp"
+#include "tendril/rl/vec_env_factory.hpp"
 
 namespace tendril::rl {
 
@@ -21,7 +23,12 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kEvalHeader = "timesteps,mean_return,std_return,mean_length,episodes\n";
+// success_rate: the fraction of the evaluation's episodes that ended at their goal (their last
+// info's is_success; seed 001 §5.3.1's success rate), empty for envs that report no success.
+constexpr const char* kEvalHeader =
+    "timesteps,mean_return,std_return,mean_length,episodes,success_rate\n";
+// eval.csv of runs from before success rates were evaluated; resuming one adds the column.
+constexpr const char* kOldEvalHeader = "timesteps,mean_return,std_return,mean_length,episodes\n";
 
 double seconds_between(Clock::time_point start, Clock::time_point end) {
   return std::chrono::duration<double>(end - start).count();
@@ -109,28 +116,41 @@ bool EvaluationObserver::on_iteration(const Progress& progress) {
 
 EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
   // A stream of its own per evaluation point, so evaluating never disturbs training.
-  std::unique_ptr<Env> env = make_evaluation_env(experiment_.env, training_env_);
-  if (experiment_.eval_record > 0) {
-    envs::RecordingOptions options;
-    options.directory = directory_ / "episodes";
-    options.prefix = "eval_" + std::to_string(timesteps);
-    options.max_episodes = experiment_.eval_record;
-    options.metadata = {
-        {"env", experiment_.env.id},
-        {"run", fs::absolute(directory_).lexically_normal().string()},
-        {"model", "evaluation at step " + std::to_string(timesteps)},
-        {"actions", experiment_.eval_deterministic ? "deterministic" : "stochastic"}};
-    env = std::make_unique<envs::EpisodeRecorder>(std::move(env), std::move(options));
+  const uint64_t seed = experiment_.seed + 1000003 + timesteps;
+  EvaluationResult eval;
+  if (experiment_.eval_n_envs > 1) {
+    VecEnvOptions options = evaluation_env_options(experiment_);
+    options.n_envs = experiment_.eval_n_envs;
+    options.normalize_observation = options.normalize_reward = false;
+    const std::unique_ptr<envs::VecEnv> envs = make_vec_env(options);
+    eval = evaluate_policy(algorithm_.policy(), *envs, experiment_.eval_episodes,
+                           experiment_.eval_deterministic, seed);
+  } else {
+    std::unique_ptr<Env> env =
+        make_evaluation_env(evaluation_env_options(experiment_), training_env_);
+    if (experiment_.eval_record > 0) {
+      envs::RecordingOptions options;
+      options.directory = directory_ / "episodes";
+      options.prefix = "eval_" + std::to_string(timesteps);
+      options.max_episodes = experiment_.eval_record;
+      options.metadata = {
+          {"env", experiment_.env.id},
+          {"run", fs::absolute(directory_).lexically_normal().string()},
+          {"model", "evaluation at step " + std::to_string(timesteps)},
+          {"actions", experiment_.eval_deterministic ? "deterministic" : "stochastic"}};
+      env = std::make_unique<envs::EpisodeRecorder>(std::move(env), std::move(options));
+    }
+    eval = evaluate_policy(algorithm_.policy(), *env, experiment_.eval_episodes,
+                           experiment_.eval_deterministic, seed);
   }
-  const EvaluationResult eval =
-      evaluate_policy(algorithm_.policy(), *env, experiment_.eval_episodes,
-                      experiment_.eval_deterministic, experiment_.seed + 1000003 + timesteps);
   double mean_length = 0.0;
   for (int64_t length : eval.lengths) mean_length += static_cast<double>(length);
   mean_length /= static_cast<double>(eval.lengths.size());
   std::ostringstream row;
   row << timesteps << ',' << exact_text(eval.mean_return()) << ',' << exact_text(eval.std_return())
-      << ',' << mean_length << ',' << eval.returns.size() << '\n';
+      << ',' << mean_length << ',' << eval.returns.size() << ',';
+  if (const std::optional<double> rate = eval.success_rate()) row << exact_text(*rate);
+  row << '\n';
   append_to_file(directory_ / "eval.csv", row.str(), "eval.csv");
   if (experiment_.eval_save_best && (!best_mean_ || eval.mean_return() >= *best_mean_)) {
     algorithm_.save_policy(directory_ / "best_model.policy");
@@ -152,7 +172,11 @@ void EvaluationObserver::restore(int64_t up_to) {
   std::istringstream in(original.substr(0, original.rfind('\n') + 1));
   std::string line, kept = kEvalHeader;
   for (int number = 1; std::getline(in, line); ++number) {
-    if (line.empty() || (number == 1 && line + '\n' == kEvalHeader)) continue;
+    if (line.empty() ||
+        (number == 1 && (line + '\n' == kEvalHeader || line + '\n' == kOldEvalHeader))) {
+      continue;
+    }
+    if (std::count(line.begin(), line.end(), ',') == 4) line += ',';  // an old row
     int64_t timesteps = 0;
     double mean = 0.0;
     const std::size_t comma = line.find(',');

@@ -12,11 +12,16 @@ namespace tendril::rl {
 
 std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options) {
   require(options.n_envs >= 1, "n_envs must be at least 1", "rl::make_vec_env");
-  auto factory = [&options](int) -> std::unique_ptr<Env> {
-    return std::make_unique<envs::EpisodeStatistics>(make_env(options));
-  };
-  std::unique_ptr<envs::VecEnv> env =
-      std::make_unique<envs::ThreadedVecEnv>(options.n_envs, factory, options.num_threads);
+  // An env that steps N copies at once (a batched learned model) is built as one, unless
+  // per-env wrappers are asked for.
+  std::unique_ptr<envs::VecEnv> env;
+  if (options.wrappers.empty()) env = envs::make_vector(options.id, options.params, options.n_envs);
+  if (!env) {
+    auto factory = [&options](int) -> std::unique_ptr<Env> {
+      return std::make_unique<envs::EpisodeStatistics>(make_env(options));
+    };
+    env = std::make_unique<envs::ThreadedVecEnv>(options.n_envs, factory, options.num_threads);
+  }
   if (options.normalize_observation || options.normalize_reward) {
     envs::VecNormalize::Options normalize;
     normalize.normalize_observation = options.normalize_observation;

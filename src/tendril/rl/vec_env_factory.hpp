@@ -12,9 +12,10 @@ namespace tendril::rl {
 // What SB3's make_vec_env (+ VecNormalize) builds for training: `n_envs` copies of a registered
 // environment, each wrapped as
 //   registry env (with its time limit) → the listed wrappers → EpisodeStatistics,
-// in a VecEnv that, when either normalization is on, carries one VecNormalize shared by all
-// envs (statistics of the whole batch, SB3's semantics), so episode returns are reported raw
-// while the learner sees normalized values.
+// in a VecEnv — the registry's batched one for ids that have it (EnvSpec::vector_factory) and no
+// wrappers are listed, else a ThreadedVecEnv — that, when either normalization is on, carries one
+// VecNormalize shared by all envs (statistics of the whole batch, SB3's semantics), so episode
+// returns are reported raw while the learner sees normalized values.
 struct VecEnvOptions {
   std::string id;
   Config params;

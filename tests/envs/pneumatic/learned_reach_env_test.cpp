@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -118,6 +119,51 @@ TEST(LearnedReach, TheStandInStartsAtRestAndBendsAwayFromTheChamber) {
                 LinearArmModel::rest()[3 * m + 2] - beta * LinearArmModel::kExtension * p, 1e-3)
         << m;
   }
+}
+
+// GPRCA's model (seed 002 §IV-C): predictions from the robot's measured history, which
+// follow() advances with measured tips instead of the model's own predictions.
+TEST(LearnedReach, TheModelCanFollowMeasuredTips) {
+  ModelDynamics model(std::make_shared<LinearArmModel>(), LinearArmModel::rest());
+  TipVector measured = LinearArmModel::rest();
+  measured[0] += 7.0;
+  model.reset_to(measured);
+  ChamberVector pressures = ChamberVector::Zero();
+  pressures[0] = 1.2;
+  const TipVector first = model.predict_next(pressures);
+  EXPECT_EQ(model.predict_next(pressures), first);  // the history did not move
+  // LinearArmModel's closed form from the measured tips.
+  const double beta = 1.0 - std::exp(-LinearArmModel::kPeriod / LinearArmModel::kLag);
+  const TipVector expected = measured + beta * (LinearArmModel::steady_state(pressures) - measured);
+  EXPECT_LT((first - expected).norm(), 1e-3);  // float model
+  TipVector next_measured = first;
+  next_measured[1] -= 3.0;
+  model.follow(next_measured);
+  const TipVector second = model.predict_next(pressures);
+  const TipVector expected_second =
+      next_measured + beta * (LinearArmModel::steady_state(pressures) - next_measured);
+  EXPECT_LT((second - expected_second).norm(), 1e-3);
+  EXPECT_THROW(model.follow(TipVector::Constant(NAN)), Error);
+}
+
+// rest_jitter_mm: a seeded reset moves the rest by a repeatable draw; without it every episode
+// starts at the rest.
+TEST(LearnedReach, RestJitterGivesRepeatableStartsPerSeed) {
+  const auto jittered = ReachEnv::create_on_model(Config::parse("rest_jitter_mm: 4.0\n"));
+  const auto plain = ReachEnv::create_on_model(Config::parse("{}"));
+  jittered->reset(3);
+  const TipVector first = as_reach(*jittered).tips();
+  jittered->reset();
+  const TipVector second = as_reach(*jittered).tips();
+  jittered->reset(3);
+  EXPECT_EQ(as_reach(*jittered).tips(), first);
+  EXPECT_NE(first, second);
+  plain->reset(3);
+  EXPECT_EQ(as_reach(*plain).tips(), LinearArmModel::rest());
+  const double shift = (first - LinearArmModel::rest()).norm();
+  EXPECT_GT(shift, 1.0);
+  EXPECT_LT(shift, 4.0 * 6.0);
+  EXPECT_THROW(ReachEnv::create_on_model(Config::parse("rest_jitter_mm: -1\n")), Error);
 }
 
 TEST(LearnedReach, ASnapshotRepeatsTheEpisodeBitForBit) {

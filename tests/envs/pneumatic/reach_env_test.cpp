@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/error_message.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
@@ -55,6 +57,50 @@ TEST(ReachEnv, DeltasBeyondTheRateLimitAreNotTaken) {
   step = env->step(delta_on(0, 0.1f));
   EXPECT_NEAR(as_reach(*env).command()[0], -0.9, 1e-6);
   EXPECT_EQ(*step.info.get("rate_limited"), 0.0);
+}
+
+// An absolute command (BOAC's student) is held with its change scaled down as a whole to the rate
+// limit, and observation_of(tips) is the observation a step ending at those tips returns.
+TEST(ReachEnv, AbsoluteCommandsAreRateLimitedAndObservationsFollowTheTips) {
+  // A limit of 0.09375 bar (0.125 normalised).
+  const auto env = reach("observe_command: true\nrate_limit_bar: 0.09375\n");
+  const auto same = reach("observe_command: true\nrate_limit_bar: 0.09375\n");
+  env->reset(0);
+  same->reset(0);
+  ReachEnv& task = as_reach(*env);
+  ChamberVector wanted = ChamberVector::Constant(-1.0);
+  wanted[2] = 0.5;    // 1.5 above the held −1
+  wanted[5] = -0.25;  // 0.75 above: the change keeps its direction, scaled by 0.125 / 1.5
+  Step step = task.step_command(wanted);
+  EXPECT_NEAR(task.command()[2], -0.875, 1e-15);
+  EXPECT_NEAR(task.command()[5], -0.9375, 1e-15);
+  EXPECT_EQ(task.command()[0], -1.0);
+  EXPECT_EQ(*step.info.get("rate_limited"), 1.0);
+  // The same command as deltas through step() gives the same arm.
+  Action delta = Action::Zero(9);
+  delta[2] = 0.125f;
+  delta[5] = 0.0625f;
+  const Step by_delta = same->step(delta);
+  EXPECT_LT((as_reach(*same).tips() - task.tips()).norm(), 1e-9);
+  EXPECT_EQ(task.observation_of(task.tips()), step.observation);
+  EXPECT_LT((by_delta.observation.head(11) - step.observation.head(11)).norm(), 1e-5);
+  // Within the limit a command is taken as it is; beyond [−1, 1] it is capped first.
+  wanted = task.command();
+  wanted[5] = -0.9;
+  wanted[7] = -3.0;
+  step = task.step_command(wanted);
+  EXPECT_EQ(task.command()[5], -0.9);
+  EXPECT_EQ(task.command()[7], -1.0);
+  EXPECT_EQ(*step.info.get("rate_limited"), 0.0);
+  // Other tips: their own distances, the held command.
+  TipVector elsewhere = task.tips();
+  elsewhere.tail<3>() = Eigen::Vector3d(-30.0, -120.0, -620.0);  // the main goal
+  const Observation at_goal = task.observation_of(elsewhere);
+  EXPECT_FLOAT_EQ(at_goal[9], -1.0f);  // G = 0 → 2·0/300 − 1
+  EXPECT_EQ(at_goal.tail(9), step.observation.tail(9));
+  ChamberVector bad = wanted;
+  bad[0] = NAN;
+  EXPECT_THROW(task.step_command(bad), Error);
 }
 
 // The observation is the tips normalised per coordinate by the configured bounds, then

@@ -6,7 +6,10 @@
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/envs/learned/model_loader.hpp"
 #include "tendril/envs/pneumatic/open_loop_reach.hpp"
+#include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
 
 namespace tendril::envs::pneumatic {
 namespace {
@@ -50,6 +53,50 @@ TEST_F(ReplayTrials, TheDeterministicTwinRepeatsAndDamageShowsAsAGap) {
   EXPECT_EQ(header, "scenario,trial,module,mad_from_reference_mm,mad_from_own_base_mm");
   EXPECT_NE(error_message([&] { write_replay_report(report, directory_, "again"); }).find("exists"),
             std::string::npos);
+}
+
+// A model that stays at the rest it starts from, whatever the pressures.
+class StillModel : public DynamicsModel {
+ public:
+  int state_dim() const override { return 9; }
+  int input_dim() const override { return 9; }
+  int window_length() const override { return 3; }
+  double sample_period() const override { return 0.1; }
+  void predict(const BatchMatrix& windows, BatchMatrix& next_states) override {
+    next_states = windows.rightCols(18).leftCols(9);  // the newest row's tips
+  }
+};
+
+// Fig. 6 proper: the learned model run open loop is the reference. A model that never moves
+// from the rest makes every trial's MAD the arm's mean excursion from the rest: the same for
+// every trial of the deterministic twin, and positive for S0 too.
+TEST_F(ReplayTrials, ALearnedModelCanBeTheReference) {
+  install_dynamics_model_loader([](const std::string& path) -> std::unique_ptr<DynamicsModel> {
+    if (path != "still") throw Error("no model at " + path);
+    return std::make_unique<StillModel>();
+  });
+  PneumaticDataset data;
+  data.time_s = Eigen::Vector2d(0.0, 0.1);
+  data.commands_bar = PneumaticDataset::Columns::Zero(2, 9);
+  data.tips_mm = PneumaticDataset::Columns::Zero(2, 9);
+  data.tips_mm.row(0) << 0, 0, -199.3, 0, 0, -398.6, 0, 0, -597.9;
+  const auto rest = directory_ / "rest.csv";
+  write_pneumatic_dataset(rest, data);
+  const std::string model = "reference_model: {model: still, rest_from: " + rest.string() + "}\n";
+  const ReplayReport report = replay_trials(Config::parse(kDeterministic + model, "replay.yaml"));
+  ASSERT_EQ(report.rows.size(), 18u);
+  for (const ReplayReport::Row& row : report.rows) {
+    EXPECT_GT(row.mad_from_reference_mm, 0.5) << row.scenario << " " << row.module;
+    EXPECT_EQ(row.mad_from_reference_mm,
+              report.rows[row.module - 1 + (row.scenario == "S3" ? 9 : 0)].mad_from_reference_mm);
+  }
+  EXPECT_NE(
+      error_message([&] {
+        replay_trials(Config::parse(
+            std::string(kDeterministic) + "reference_model: {model: still}\n", "replay.yaml"));
+      }).find("rest_from"),
+      std::string::npos);
+  install_dynamics_model_loader(nullptr);
 }
 
 TEST_F(ReplayTrials, WithEffectsOnTrialsDifferAndBadKeysAreNamed) {

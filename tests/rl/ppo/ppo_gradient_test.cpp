@@ -182,6 +182,17 @@ TEST(PpoGradient, CategoricalMatchesAutograd) {
   check_gradient(categorical(true), kClippedWithEntropy, 8);
 }
 
+TEST(PpoGradient, ASoftsignActorWithASoftsignMeanMatchesAutograd) {
+  // Seed 002's actor: softsign in the trunk and on the Gaussian mean.
+  nn::ActorCriticSpec spec = gaussian(false);
+  spec.activation = nn::Activation::kSoftsign;
+  spec.policy_output_activation = nn::Activation::kSoftsign;
+  check_gradient(spec, kPlain, 11);
+  check_gradient(spec, kClippedWithEntropy, 12);
+  spec.shared_trunk = true;
+  check_gradient(spec, kPlain, 13);
+}
+
 TEST(PpoGradient, HeadsDirectlyOnTheObservationMatchAutograd) {
   // net_arch: [] — no trunk, each head is one linear layer on the observation.
   nn::ActorCriticSpec spec = gaussian(false);

@@ -169,21 +169,9 @@ class ReferenceSac {
   float log_ent_coef() const { return log_ent_coef_.item<float>(); }
 
  private:
-  // SB3's SquashedDiagGaussianDistribution with the actor's μ and log σ heads (log σ clamped to
-  // [−20, 2]): a = tanh(μ + σ ε), log π = Σ_j log N(u_j; μ_j, σ_j) − Σ_j log(1 − a_j² + 1e-6).
   std::pair<torch::Tensor, torch::Tensor> sample(const torch::Tensor& observations,
                                                  const torch::Tensor& noise) {
-    const torch::Tensor head = actor_->forward(observations);
-    const torch::Tensor mean = head.slice(1, 0, kActions);
-    const torch::Tensor log_std = torch::clamp(head.slice(1, kActions, 2 * kActions), -20, 2);
-    const torch::Tensor std = torch::exp(log_std);
-    const torch::Tensor u = mean + std * noise;
-    const torch::Tensor a = torch::tanh(u);
-    const torch::Tensor gaussian =
-        -(u - mean).pow(2) / (2 * std.pow(2)) - log_std - 0.5 * std::log(2 * M_PI);
-    const torch::Tensor log_prob =
-        gaussian.sum(1, /*keepdim=*/true) - torch::log(1 - a.pow(2) + 1e-6).sum(1, true);
-    return {a, log_prob};
+    return squashed_gaussian_sample(actor_, observations, noise, kActions);
   }
 
   torch::nn::Sequential actor_;

@@ -45,6 +45,12 @@ PneumaticArmSpec arm_spec_from(const Config& params) {
     throw Error("must be 0, 1 or 2, got " + std::to_string(spec.damaged_chamber),
                 key_where(params, "damaged_chamber"));
   }
+  // The knob's residual supply: the fraction of its command a disrupted chamber still reaches.
+  spec.regulators.disabled_fraction = params.get_or<double>("damaged_fraction", 0.0);
+  if (!(spec.regulators.disabled_fraction >= 0.0 && spec.regulators.disabled_fraction < 1.0)) {
+    throw Error("must lie in [0, 1), got " + std::to_string(spec.regulators.disabled_fraction),
+                key_where(params, "damaged_fraction"));
+  }
   spec.instance_seed = params.get_or<uint64_t>("instance_seed", 0);
 
   const bool stochastic = params.get_or<bool>("stochastic", true);
@@ -67,6 +73,9 @@ PneumaticArmSpec arm_spec_from(const Config& params) {
   const Config noise = params.child("sensor_noise");
   effects.sensor_noise = noise.get_or<bool>("enabled", stochastic);
   effects.marker_noise = 1e-3 * non_negative(noise, "marker_sigma_mm", 1e3 * effects.marker_noise);
+  const Config elasticity = params.child("elasticity");
+  effects.elasticity = elasticity.get_or<bool>("enabled", stochastic);
+  effects.elasticity_sigma = non_negative(elasticity, "sigma", effects.elasticity_sigma);
   spec.sensor.latency = non_negative(params, "sensor_latency_s", spec.sensor.latency);
   // One knob for calibrating the twin's stochasticity against the paper's gap.
   const double scale = non_negative(params, "magnitude_scale", 1.0);
@@ -76,9 +85,15 @@ PneumaticArmSpec arm_spec_from(const Config& params) {
   effects.gain_spread *= scale;
   effects.eccentricity *= scale;
   effects.marker_noise *= scale;
+  effects.elasticity_sigma *= scale;
   if (effects.gain_spread >= 1.0) {
     throw Error("makes the chamber gain spread reach 1 or more",
                 key_where(params, "magnitude_scale"));
+  }
+  if (effects.elasticity_sigma >= 0.5) {
+    throw Error(
+        "makes the elasticity sigma reach 0.5 or more (a module could lose all response)",
+        key_where(params, elasticity.has("sigma") ? "elasticity.sigma" : "magnitude_scale"));
   }
 
   const Config twin = params.child("twin");

@@ -12,12 +12,14 @@ namespace tendril::envs::pneumatic {
 //
 //   scenario: S0                 # damage scenario S0–S4 (seed 002 §V-A)
 //   damaged_chamber: 0           # which chamber of a damaged module (0, 1, 2)
+//   damaged_fraction: 0          # of its command a disrupted chamber still reaches, [0, 1)
 //   instance_seed: 0             # the manufactured robot: draws the imbalance
 //   stochastic: true             # default of every effect's `enabled`
-//   drift: {enabled, step_mm: 3.0, cap_mm: 15.0}
+//   drift: {enabled, step_mm: 10.0, cap_mm: 40.0}
 //   hysteresis: {enabled, width_bar: 0.1}
 //   imbalance: {enabled, gain_spread: 0.1, eccentricity_mm: 2.0}
 //   sensor_noise: {enabled, marker_sigma_mm: 0.2}
+//   elasticity: {enabled, sigma: 0.1}    # per-trial factor 1 + σξ on each module's response
 //   sensor_latency_s: 0.0        # whole multiples of the 10 ms sample period
 //   magnitude_scale: 1.0         # multiplies every magnitude above (the calibration knob)
 //   twin: {elements_per_module: 6, time_step_s: 5e-4, bend_deg_per_bar: 30,

@@ -1,5 +1,7 @@
 #include "tendril/envs/pneumatic/model_dynamics.hpp"
 
+#include <cmath>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::envs::pneumatic {
@@ -7,6 +9,7 @@ namespace tendril::envs::pneumatic {
 namespace {
 
 constexpr const char* kWhere = "pneumatic::ModelDynamics";
+constexpr uint64_t kJitterStream = 11;
 
 const DynamicsModel& checked(const std::shared_ptr<DynamicsModel>& model) {
   require(model != nullptr, "no model", kWhere);
@@ -19,19 +22,28 @@ const DynamicsModel& checked(const std::shared_ptr<DynamicsModel>& model) {
 
 }  // namespace
 
-ModelDynamics::ModelDynamics(std::shared_ptr<DynamicsModel> model, const TipVector& rest_mm)
+ModelDynamics::ModelDynamics(std::shared_ptr<DynamicsModel> model, const TipVector& rest_mm,
+                             double rest_jitter_mm)
     : model_(std::move(model)),
       rest_(rest_mm),
       windows_(1, checked(model_).window_length(), 9, 9),
       inputs_(BatchMatrix::Zero(1, 9)),
-      tips_(rest_mm) {
+      tips_(rest_mm),
+      rest_jitter_mm_(rest_jitter_mm),
+      jitter_rng_(0, kJitterStream) {
   require(rest_.allFinite(), "the rest tips must be finite", kWhere);
+  require(std::isfinite(rest_jitter_mm) && rest_jitter_mm >= 0.0,
+          "the rest jitter must be finite and non-negative", kWhere);
   windows_.reset(0, rest_.cast<float>());
 }
 
-TipVector ModelDynamics::reset(std::optional<uint64_t> /*seed*/) {
-  windows_.reset(0, rest_.cast<float>());
+TipVector ModelDynamics::reset(std::optional<uint64_t> seed) {
   tips_ = rest_;
+  if (rest_jitter_mm_ > 0.0) {
+    if (seed) jitter_rng_ = Rng(*seed, kJitterStream);
+    for (int i = 0; i < 9; ++i) tips_[i] += rest_jitter_mm_ * jitter_rng_.normal();
+  }
+  windows_.reset(0, tips_.cast<float>());
   finite_ = true;
   return tips_;
 }
@@ -44,11 +56,33 @@ TipVector ModelDynamics::step(const ChamberVector& pressures_bar) {
   return tips_;
 }
 
+void ModelDynamics::reset_to(const TipVector& measured_mm) {
+  require(measured_mm.allFinite(), "measured tips must be finite", kWhere);
+  windows_.reset(0, measured_mm.cast<float>());
+  tips_ = measured_mm;
+  finite_ = true;
+}
+
+TipVector ModelDynamics::predict_next(const ChamberVector& pressures_bar) {
+  inputs_.row(0) = pressures_bar.transpose().cast<float>();
+  windows_.set_inputs(inputs_);
+  model_->predict(windows_.windows(), next_);
+  return next_.row(0).transpose().cast<double>();
+}
+
+void ModelDynamics::follow(const TipVector& measured_mm) {
+  require(measured_mm.allFinite(), "measured tips must be finite", kWhere);
+  next_.row(0) = measured_mm.transpose().cast<float>();
+  windows_.advance(next_);
+  tips_ = measured_mm;
+}
+
 void ModelDynamics::save_state(SnapshotWriter& out) const {
   out.section("ModelDynamics");
   windows_.save_state(out);
   out.put_matrix(tips_);
   out.put(finite_);
+  out.put(jitter_rng_);
 }
 
 void ModelDynamics::load_state(SnapshotReader& in) {
@@ -58,7 +92,10 @@ void ModelDynamics::load_state(SnapshotReader& in) {
   TipVector tips;
   in.get_matrix(tips);
   const bool finite = in.get_bool();
+  Rng jitter_rng = jitter_rng_;
+  in.get(jitter_rng);
   windows_ = std::move(windows);
+  jitter_rng_ = jitter_rng;
   tips_ = tips;
   finite_ = finite;
 }

@@ -66,6 +66,7 @@ OpenLoopReport open_loop_reach(const Config& robot_params,
   model_spec.scenario = physics::pneumatic::DamageScenario::kS0;
   model_spec.effects.drift = model_spec.effects.hysteresis = false;
   model_spec.effects.sensor_noise = false;
+  model_spec.effects.elasticity = false;  // the nominal elasticity
   RobotEnv model(model_spec, 0.1, false);
 
   const auto start = std::chrono::steady_clock::now();

@@ -15,7 +15,7 @@ namespace tendril::envs::pneumatic {
 //
 // For each goal, static pressures p* that bring module 3's tip to it are searched on the "model"
 // — the same twin instance (its imbalance included, which a model learned from its data would
-// know) with drift, hysteresis and sensor noise off — by a seeded random search in [0, 1.5]⁹.
+// know) with drift, hysteresis, the elasticity of the day and sensor noise off — by a seeded random search in [0, 1.5]⁹.
 // The plan ramps the commands from 0 to p* at the 0.15 bar/step rate limit and holds them to the
 // end of a 150-step episode. It is replayed in `trials` trials on the full twin of every
 // scenario (first trial begun with the seed, the others without); the final distance of

@@ -83,7 +83,7 @@ Observation ReachEnv::reset(std::optional<uint64_t> seed) {
   info_.set(info_keys::kDistance, kMetresPerMillimetre * outcome.goal_distance);
   info_.set("goal_distance_mm", outcome.goal_distance);
   info_.set("obstacle_distance_mm", outcome.obstacle_distance);
-  last_observation_ = observe(outcome);
+  last_observation_ = observe(tips_, outcome.goal_distance, outcome.obstacle_distance);
   return last_observation_;
 }
 
@@ -92,7 +92,28 @@ Step ReachEnv::step(const Action& action) {
   const ChamberVector delta = action.cast<double>();
   // The rate limit, with a relative tolerance for deltas that float rounding put just past it.
   const bool rate_limited = delta.cwiseAbs().maxCoeff() > setup_.rate_limit * (1.0 + 1e-6);
-  if (!rate_limited) command_ = (command_ + delta).cwiseMax(-1.0).cwiseMin(1.0);
+  if (rate_limited) return advance(command_, true);
+  return advance((command_ + delta).cwiseMax(-1.0).cwiseMin(1.0), false);
+}
+
+Step ReachEnv::step_command(const ChamberVector& command) {
+  require(command.allFinite(), "the command must be finite", setup_.id);
+  // A change beyond the rate limit is scaled down as a whole, keeping its direction (clipping
+  // each chamber alone would turn it toward the diagonal).
+  ChamberVector change = command.cwiseMax(-1.0).cwiseMin(1.0) - command_;
+  const double largest = change.cwiseAbs().maxCoeff();
+  const bool rate_limited = largest > setup_.rate_limit;
+  if (rate_limited) change *= setup_.rate_limit / largest;
+  return advance((command_ + change).cwiseMax(-1.0).cwiseMin(1.0), rate_limited);
+}
+
+Observation ReachEnv::observation_of(const TipVector& tips_mm) const {
+  const Eigen::Vector3d tip = module_3_tip(tips_mm);
+  return observe(tips_mm, (tip - setup_.task.goal).norm(), obstacle_distance(setup_.task, tip));
+}
+
+Step ReachEnv::advance(const ChamberVector& command, bool rate_limited) {
+  command_ = command;
   ChamberVector pressures;
   for (int k = 0; k < physics::pneumatic::kChambers; ++k) pressures[k] = pressure_of(command_[k]);
 
@@ -111,7 +132,7 @@ Step ReachEnv::step(const Action& action) {
   }
   tips_ = tips;
   const ReachOutcome outcome = evaluate_reach_step(setup_.task, previous_tip, module_3_tip(tips_));
-  result.observation = observe(outcome);
+  result.observation = observe(tips_, outcome.goal_distance, outcome.obstacle_distance);
   result.reward = outcome.reward;
   result.terminated = outcome.ends_episode;
   last_observation_ = result.observation;
@@ -128,15 +149,16 @@ Step ReachEnv::step(const Action& action) {
   return result;
 }
 
-Observation ReachEnv::observe(const ReachOutcome& outcome) const {
+Observation ReachEnv::observe(const TipVector& tips, double goal_distance,
+                              double obstacle_distance) const {
   const ReachObservationSpec& spec = setup_.observation;
   Observation observation(spec.size());
   for (int i = 0; i < 9; ++i) {
     observation[i] = static_cast<float>(
-        2.0 * (tips_[i] - spec.tip_min[i]) / (spec.tip_max[i] - spec.tip_min[i]) - 1.0);
+        2.0 * (tips[i] - spec.tip_min[i]) / (spec.tip_max[i] - spec.tip_min[i]) - 1.0);
   }
-  observation[9] = static_cast<float>(2.0 * outcome.goal_distance / spec.distance_scale - 1.0);
-  observation[10] = static_cast<float>(2.0 * outcome.obstacle_distance / spec.distance_scale - 1.0);
+  observation[9] = static_cast<float>(2.0 * goal_distance / spec.distance_scale - 1.0);
+  observation[10] = static_cast<float>(2.0 * obstacle_distance / spec.distance_scale - 1.0);
   if (spec.observe_command) {
     for (int k = 0; k < 9; ++k) observation[11 + k] = static_cast<float>(command_[k]);
   }

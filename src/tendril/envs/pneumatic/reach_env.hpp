@@ -88,6 +88,15 @@ class ReachEnv : public Env {
   const Space& action_space() const override { return action_space_; }
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  // A step with an absolute command (normalised, a ∈ [−1, 1]⁹) instead of a delta, for
+  // controllers that set pressures themselves (BOAC's student, seed 002 §IV-B): the command is
+  // capped to [−1, 1], and a change from the held command beyond the rate limit is scaled down
+  // as a whole to it (the robot never gets a larger jump, in the direction asked; info
+  // "rate_limited" = 1 when it was scaled). Then as step().
+  Step step_command(const ChamberVector& command);
+  // The observation the policy would receive if the tips were `tips_mm` (with the distances
+  // computed from them and the held command): GPRCA's compensated observation s = x + c.
+  Observation observation_of(const TipVector& tips_mm) const;
   bool supports_snapshots() const override { return dynamics_->supports_snapshots(); }
   void save_state(SnapshotWriter& out) const override;
   void load_state(SnapshotReader& in) override;
@@ -98,10 +107,14 @@ class ReachEnv : public Env {
   const ChamberVector& command() const { return command_; }  // normalised
   const TipVector& tips() const { return tips_; }            // mm
   const ReachTaskSpec& task() const { return setup_.task; }
+  const ReachObservationSpec& observation_spec() const { return setup_.observation; }
+  double rate_limit() const { return setup_.rate_limit; }
   ArmDynamics& dynamics() { return *dynamics_; }
 
  private:
-  Observation observe(const ReachOutcome& outcome) const;
+  Observation observe(const TipVector& tips, double goal_distance, double obstacle_distance) const;
+  // Holds `command` (already capped) for one period and scores the step.
+  Step advance(const ChamberVector& command, bool rate_limited);
 
   Setup setup_;
   std::unique_ptr<ArmDynamics> dynamics_;

@@ -127,8 +127,12 @@ std::unique_ptr<Env> ReachEnv::create_on_model(const Config& params) {
     throw Error("a learned model needs the arm's rest: rest_mm or rest_from",
                 params.source() + ": " + params.path());
   }
-  return std::make_unique<ReachEnv>(std::move(setup),
-                                    std::make_unique<ModelDynamics>(std::move(model), rest));
+  const double jitter = params.get_or<double>("rest_jitter_mm", 0.0);
+  if (!(std::isfinite(jitter) && jitter >= 0.0)) {
+    throw Error("must be finite and non-negative", key_where(params, "rest_jitter_mm"));
+  }
+  return std::make_unique<ReachEnv>(
+      std::move(setup), std::make_unique<ModelDynamics>(std::move(model), rest, jitter));
 }
 
 }  // namespace tendril::envs::pneumatic

@@ -5,8 +5,11 @@
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/envs/learned/model_loader.hpp"
 #include "tendril/envs/pneumatic/arm_params.hpp"
 #include "tendril/envs/pneumatic/decimal_text.hpp"
+#include "tendril/envs/pneumatic/model_dynamics.hpp"
+#include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
 #include "tendril/envs/pneumatic/saturating_signal.hpp"
 #include "tendril/envs/registry.hpp"
 
@@ -52,6 +55,23 @@ ReplayReport replay_trials(const Config& config) {
   report.module_3_gap_mm =
       Eigen::MatrixXd::Zero(steps, static_cast<Eigen::Index>(scenarios.size()));
   Trajectory reference;
+  const Config model_config = config.child("reference_model");
+  const bool model_reference = config.has("reference_model");
+  if (model_reference) {
+    // Fig. 6 proper: the learned model run open loop on the commands, recursively on its own
+    // predictions from the arm's rest.
+    const std::string file = model_config.get<std::string>("rest_from");
+    ModelDynamics model(load_dynamics_model(model_config.get<std::string>("model"),
+                                            key_where(model_config, "model")),
+                        read_pneumatic_dataset(file).tips_mm.row(0).transpose());
+    model_config.reject_unknown();
+    model.reset(std::nullopt);
+    reference.resize(steps, 9);
+    for (int k = 0; k < steps; ++k) {
+      reference.row(k) = model.step(commands[k].cast<double>()).transpose();
+      if (!model.finite()) throw Error("the model's prediction became non-finite", file);
+    }
+  }
   for (size_t s = 0; s < scenarios.size(); ++s) {
     params.set("scenario", scenarios[s]);
     if (!params.has("max_episode_steps"))
@@ -73,7 +93,7 @@ ReplayReport replay_trials(const Config& config) {
       }
       runs.push_back(std::move(tips));
     }
-    if (s == 0) reference = runs[0];
+    if (s == 0 && !model_reference) reference = runs[0];
     for (int trial = 0; trial < trials; ++trial) {
       for (int m = 0; m < 3; ++m) {
         report.rows.push_back({scenarios[s], trial + 1, m + 1, mad(runs[trial], reference, m),

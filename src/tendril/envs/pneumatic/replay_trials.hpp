@@ -18,9 +18,10 @@ namespace tendril::envs::pneumatic {
 // The trajectory is the data protocol's saturating signal from `seed`. For every scenario a robot
 // is built from the same parameters (so the same instance), its first trial begun with `seed` and
 // the others without (so the resting drift walks on between trials, as on the real arm). The
-// reference is the first trial of the first scenario listed (S0's base trial): in Fig. 6 it is the
-// learned model; until that model exists, the intact twin's own base trial stands in, so the S0
-// rows measure the trial-to-trial stochasticity alone and the S1–S4 rows damage on top of it.
+// reference is, as in Fig. 6, the learned model run open loop on the same commands from the
+// arm's rest (`reference_model`); without one, the first trial of the first scenario listed
+// (S0's base trial) stands in, so the S0 rows measure the trial-to-trial stochasticity alone and
+// the S1–S4 rows damage on top of it.
 struct ReplayReport {
   struct Row {
     std::string scenario;
@@ -45,6 +46,7 @@ struct ReplayReport {
 //   duration_s: 30
 //   seed: 0
 //   signal: {...}                                     # as the data protocol's
+//   reference_model: {model: FILE_OR_RUN, rest_from: DATA_FILE}   # optional, see above
 // Raises Error naming a bad key or value.
 ReplayReport replay_trials(const Config& config);
 

@@ -7,6 +7,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
+#include "tendril/envs/sma_limb/reach_observation.hpp"
 
 namespace tendril::envs::sma_limb {
 
@@ -171,25 +172,9 @@ void LearnedReachBatch::observe(int env, Eigen::Ref<Eigen::VectorXf> out) const 
   check_env(env);
   require(out.size() == observation_size(), "observation buffer of the wrong size", kWhere);
   const Task& task = tasks_[env];
-  // A non-finite prediction ends the episode; the observation keeps finite values (below).
-  out.head<4>() = windows_.state(env);
-  out.segment<2>(4) = task.throttles.cast<float>();
-  out.segment<4>(6) = task.goal.cast<float>();
-  if (options_.power_proxy) out.segment<4>(10) = task.power.power().cast<float>();
-  const int base = options_.power_proxy ? 14 : 10;
-  const int length = windows_.length(), row = windows_.row_size();
-  const auto window = windows_.windows().row(env);
-  for (int h = 0; h < options_.history; ++h) {
-    const int k = length - options_.history + h;
-    auto slot = out.segment(base + 6 * h, 6);
-    slot.head<4>() = window.segment(k * row, 4).transpose();
-    if (k > 0) {
-      slot.tail<2>() = window.segment((k - 1) * row + 4, 2).transpose();
-    } else {
-      slot.tail<2>().setZero();
-    }
-  }
-  if (!out.allFinite()) out = out.unaryExpr([](float v) { return std::isfinite(v) ? v : 0.0f; });
+  // A non-finite prediction ends the episode; the observation keeps finite values.
+  write_reach_observation(windows_, env, task.throttles, task.goal,
+                          options_.power_proxy ? &task.power : nullptr, options_.history, out);
 }
 
 Eigen::Vector4d LearnedReachBatch::state(int env) const {

@@ -15,16 +15,15 @@ LearnedReachEnv::LearnedReachEnv(std::shared_ptr<DynamicsModel> model, LearnedRe
       action_space_(LearnedReachBatch::action_space()),
       action_(BatchMatrix::Zero(1, 2)) {}
 
+std::shared_ptr<DynamicsModel> LearnedReachEnv::open_model(const Config& params) {
+  if (!params.has("model")) return std::make_shared<LinearLimbModel>();
+  return load_dynamics_model(params.get<std::string>("model"), kId);
+}
+
 std::unique_ptr<Env> LearnedReachEnv::create(const Config& params) {
   const uint64_t seed = params.get_or<uint64_t>("seed", 0);
   LearnedReachOptions options = LearnedReachOptions::from_config(params);
-  std::shared_ptr<DynamicsModel> model;
-  if (params.has("model")) {
-    model = load_dynamics_model(params.get<std::string>("model"), kId);
-  } else {
-    model = std::make_shared<LinearLimbModel>();
-  }
-  return std::make_unique<LearnedReachEnv>(std::move(model), options, seed);
+  return std::make_unique<LearnedReachEnv>(open_model(params), options, seed);
 }
 
 Observation LearnedReachEnv::observe() const {

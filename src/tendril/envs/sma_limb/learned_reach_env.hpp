@@ -26,6 +26,8 @@ class LearnedReachEnv : public Env {
 
   LearnedReachEnv(std::shared_ptr<DynamicsModel> model, LearnedReachOptions options, uint64_t seed);
   static std::unique_ptr<Env> create(const Config& params);
+  // The model `params.model` names, through the installed loader (LinearLimbModel without one).
+  static std::shared_ptr<DynamicsModel> open_model(const Config& params);
 
   const Space& observation_space() const override { return observation_space_; }
   const Space& action_space() const override { return action_space_; }

@@ -35,8 +35,26 @@ Ppo::Ppo(envs::VecEnv& env, const PpoConfig& config, uint64_t seed)
   nn::Adam::Options options;
   options.learning_rate = config_.learning_rate.initial;
   options.epsilon = config_.adam_epsilon;
-  optimizer_ = nn::Adam(parameters().size(), options);
+  if (config_.vf_learning_rate) {
+    const int64_t policy_count = network().policy_parameter_count();
+    optimizer_ = nn::Adam(policy_count, options);
+    options.learning_rate = config_.vf_learning_rate->initial;
+    value_optimizer_ = nn::Adam(parameters().size() - policy_count, options);
+  } else {
+    optimizer_ = nn::Adam(parameters().size(), options);
+  }
   gradient_ = Eigen::VectorXf::Zero(parameters().size());
+}
+
+void Ppo::adam_step(Eigen::VectorXf& parameters) {
+  if (!config_.vf_learning_rate) {
+    optimizer_.step(parameters, gradient_);
+    return;
+  }
+  const int64_t policy_count = network().policy_parameter_count();
+  const int64_t value_count = parameters.size() - policy_count;
+  optimizer_.step(parameters.head(policy_count), gradient_.head(policy_count));
+  value_optimizer_.step(parameters.tail(value_count), gradient_.tail(value_count));
 }
 
 // One PPO update (Schulman et al. 2017, Algorithm 1): optimise the surrogate
@@ -50,6 +68,9 @@ TrainStats Ppo::train(double progress_remaining) {
                                  .ent_coef = config_.ent_coef,
                                  .vf_coef = config_.vf_coef};
   optimizer_.set_learning_rate(learning_rate);
+  const double vf_learning_rate =
+      config_.vf_learning_rate ? config_.vf_learning_rate->at(progress_remaining) : learning_rate;
+  if (config_.vf_learning_rate) value_optimizer_.set_learning_rate(vf_learning_rate);
   const nn::ActorCritic& network = this->network();
   Eigen::VectorXf& parameters = this->parameters();
   nn::ActorCritic::Tape tape;
@@ -76,7 +97,7 @@ TrainStats Ppo::train(double progress_remaining) {
       network.backward(parameters, tape, sample_gradients.log_prob, sample_gradients.entropy,
                        sample_gradients.value, gradient_);
       if (config_.max_grad_norm) nn::clip_grad_norm(gradient_, *config_.max_grad_norm);
-      optimizer_.step(parameters, gradient_);
+      adam_step(parameters);
     }
   }
 
@@ -93,6 +114,7 @@ TrainStats Ppo::train(double progress_remaining) {
       {"train/clip_range", settings.clip_range},
       {"train/learning_rate", learning_rate},
   };
+  if (config_.vf_learning_rate) stats.emplace_back("train/vf_learning_rate", vf_learning_rate);
   if (!network.spec().discrete) {
     const auto log_std = parameters.segment(network.log_std_offset(), network.spec().action_size);
     stats.emplace_back("train/std", log_std.array().exp().cast<double>().mean());
@@ -100,10 +122,23 @@ TrainStats Ppo::train(double progress_remaining) {
   return stats;
 }
 
-void Ppo::write_optimizers(ArchiveWriter& writer) const { save_adam(writer, "adam", optimizer_); }
+void Ppo::write_optimizers(ArchiveWriter& writer) const {
+  save_adam(writer, "adam", optimizer_);
+  if (config_.vf_learning_rate) save_adam(writer, "adam_value", value_optimizer_);
+}
 
 std::function<void()> Ppo::read_optimizers(const ArchiveReader& reader) {
-  return prepare_adam(reader, "adam", optimizer_, parameters().size());
+  if (!config_.vf_learning_rate) {
+    return prepare_adam(reader, "adam", optimizer_, parameters().size());
+  }
+  const int64_t policy_count = network().policy_parameter_count();
+  auto install_policy = prepare_adam(reader, "adam", optimizer_, policy_count);
+  auto install_value =
+      prepare_adam(reader, "adam_value", value_optimizer_, parameters().size() - policy_count);
+  return [install_policy, install_value] {
+    install_policy();
+    install_value();
+  };
 }
 
 }  // namespace tendril::rl

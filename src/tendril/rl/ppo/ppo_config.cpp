@@ -34,6 +34,9 @@ PpoConfig PpoConfig::from_config(const Config& algo) {
   config.batch_size = algo.get_or<int64_t>("batch_size", config.batch_size);
   config.n_epochs = algo.get_or<int64_t>("n_epochs", config.n_epochs);
   config.learning_rate = read_schedule(algo, "learning_rate", config.learning_rate);
+  if (algo.has("vf_learning_rate")) {
+    config.vf_learning_rate = read_schedule(algo, "vf_learning_rate", Schedule{});
+  }
   config.clip_range = read_schedule(algo, "clip_range", config.clip_range);
   config.clip_range_vf = algo.get_optional("clip_range_vf", config.clip_range_vf);
   config.ent_coef = algo.get_or<double>("ent_coef", config.ent_coef);
@@ -52,6 +55,8 @@ void PpoConfig::validate() const {
   require(batch_size >= 1, "batch_size must be at least 1", where);
   require(n_epochs >= 1, "n_epochs must be at least 1", where);
   require(learning_rate.initial > 0.0, "learning_rate must be positive", where);
+  require(!vf_learning_rate || vf_learning_rate->initial > 0.0, "vf_learning_rate must be positive",
+          where);
   require(clip_range.initial > 0.0, "clip_range must be positive", where);
   require(!clip_range_vf || *clip_range_vf > 0.0, "clip_range_vf must be positive", where);
   require(!max_grad_norm || *max_grad_norm > 0.0, "max_grad_norm must be positive", where);

@@ -19,6 +19,11 @@ struct PpoConfig {
   int64_t batch_size = 64;  // minibatch size
   int64_t n_epochs = 10;    // passes over each rollout
   Schedule learning_rate{3e-4, false};
+  // A learning rate of the value network's own (seed 002 §IV-A3: critic 0.01 → 0.001 beside
+  // the actor's 0.003 → 0.0001). Unset, one Adam over both networks follows `learning_rate`, as
+  // SB3; set, the policy block and the value block each have an Adam, the value's following
+  // this schedule. Adam acts element by element, so equal schedules give the same update.
+  std::optional<Schedule> vf_learning_rate;
   Schedule clip_range{0.2, false};            // ε of the clipped surrogate
   std::optional<double> clip_range_vf;        // value clipping around the old values; off if unset
   double ent_coef = 0.0;                      // c₂, entropy bonus
@@ -36,6 +41,7 @@ struct PpoConfig {
   static PpoConfig ppo1();
   // `preset: sb3 | ppo1` (default sb3) and then any of the keys below over the preset:
   //   n_steps, batch_size, n_epochs, gamma, gae_lambda, learning_rate, learning_rate_schedule,
+  //   learning_rate_final, vf_learning_rate (+ _schedule, _final),
   //   clip_range, clip_range_schedule, clip_range_vf, normalize_advantage, ent_coef, vf_coef,
   //   max_grad_norm, target_kl, adam_epsilon, policy{…}
   // clip_range_vf, max_grad_norm and target_kl take `none` to turn them off.

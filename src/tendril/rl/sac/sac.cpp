@@ -7,11 +7,37 @@
 
 namespace tendril::rl {
 
+namespace {
+
+// The head's weights come from a stream of their own, so adding a head leaves the draws of the
+// actor and the critics as they were.
+constexpr uint64_t kHeadInitStream = 1;
+
+nn::CreatedHead create_head(const SacConfig& config, Rng init_rng) {
+  if (!config.head) return {};
+  Rng rng = init_rng.derive(kHeadInitStream);
+  return nn::create_feature_head(*config.head, rng);
+}
+
+int64_t stored_observation_size(const envs::VecEnv& env, const SacConfig& config,
+                                const nn::CreatedHead& head) {
+  const ObservationEncoder encoder(head.head, env.observation_space().size());
+  return config.head && !config.head->trainable ? encoder.encoded_size()
+                                                : encoder.observation_size();
+}
+
+}  // namespace
+
 Sac::Sac(envs::VecEnv& env, const SacConfig& config, uint64_t seed)
-    : OffPolicyAlgorithm("SAC", env, config.common, seed),
+    : Sac(env, config, seed, create_head(config, Rng(seed, static_cast<uint64_t>(Stream::kInit)))) {
+}
+
+Sac::Sac(envs::VecEnv& env, const SacConfig& config, uint64_t seed, nn::CreatedHead head)
+    : OffPolicyAlgorithm("SAC", env, config.common, seed,
+                         stored_observation_size(env, config, head)),
       config_(config),
       policy_(env.observation_space(), env.action_space(), config.common.net_arch,
-              config.common.activation, config.use_sde) {
+              config.common.activation, config.use_sde, head.head) {
   config_.validate();
   const int64_t actions = action_size();
   target_entropy_ = config_.target_entropy.value_or(-static_cast<double>(actions));
@@ -25,19 +51,59 @@ Sac::Sac(envs::VecEnv& env, const SacConfig& config, uint64_t seed)
   const double learning_rate = config_.common.learning_rate.initial;
   actor_optimizer_ = nn::Adam(parameters.size(), {learning_rate});
   env_exploration_.resize(num_envs());
-  critics_ = QCritics(2, observation_size(), actions, config_.common.critic_arch(),
+  critics_ = QCritics(2, policy_.encoder().encoded_size(), actions, config_.common.critic_arch(),
                       config_.common.activation, learning_rate, init_rng);
   log_ent_coef_ = Eigen::VectorXf::Constant(1, static_cast<float>(std::log(config_.ent_coef)));
   ent_coef_optimizer_ = nn::Adam(1, {learning_rate});
+  if (head.head) {
+    policy_.head_parameters() = head.parameters;
+    head_target_ = head.parameters;
+    head_gradient_ = Eigen::VectorXf::Zero(head.parameters.size());
+    head_optimizer_ = nn::Adam(head.parameters.size(), {learning_rate});
+  }
 }
 
 double Sac::entropy_coefficient() const { return std::exp(static_cast<double>(log_ent_coef_[0])); }
 
+void Sac::store_observations(const Eigen::Ref<const Eigen::MatrixXf>& observations,
+                             Eigen::MatrixXf& stored) {
+  if (config_.head && !head_trains()) {
+    stored = encode_collected(observations);
+  } else {
+    stored = observations;
+  }
+}
+
+const Eigen::MatrixXf& Sac::encode_collected(
+    const Eigen::Ref<const Eigen::MatrixXf>& observations) {
+  const bool same = collected_.rows() == observations.rows() &&
+                    collected_.cols() == observations.cols() && collected_ == observations;
+  if (!same) {
+    collected_ = observations;
+    policy_.encoder().encode(policy_.head_parameters(), collected_, /*record=*/false,
+                             collect_pass_);
+    collected_encoded_ = collect_pass_.encoded;
+  }
+  return collected_encoded_;
+}
+
+Eigen::Ref<const Eigen::MatrixXf> Sac::actor_inputs(
+    const Eigen::Ref<const Eigen::MatrixXf>& observations) {
+  if (!config_.head) return observations;
+  if (head_trains()) {
+    policy_.encoder().encode(policy_.head_parameters(), observations, /*record=*/false,
+                             collect_pass_);
+    return collect_pass_.encoded;
+  }
+  return encode_collected(observations);
+}
+
 void Sac::explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
                   Eigen::MatrixXf& actions) {
+  const Eigen::Ref<const Eigen::MatrixXf> inputs = actor_inputs(observations);
   PolicySample sample;
   if (!config_.use_sde) {
-    policy_.sample(observations, rng, exploration_, sample);
+    policy_.sample(inputs, rng, exploration_, sample);
     actions = sample.gaussian.actions;
     return;
   }
@@ -50,11 +116,35 @@ void Sac::explore(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rn
     steps_since_resample_ = 0;
   }
   ++steps_since_resample_;
-  actions.resize(action_size(), observations.cols());
-  for (Eigen::Index i = 0; i < observations.cols(); ++i) {
-    policy_.sample(observations.col(i), rng, env_exploration_[i], sample);
+  actions.resize(action_size(), inputs.cols());
+  for (Eigen::Index i = 0; i < inputs.cols(); ++i) {
+    policy_.sample(inputs.col(i), rng, env_exploration_[i], sample);
     actions.col(i) = sample.sde.actions;
   }
+}
+
+void Sac::encode_batch() {
+  inputs_ = &batch_.observations;
+  next_inputs_ = target_next_inputs_ = &batch_.next_observations;
+  if (!head_trains()) return;
+  // The recorded pass last: a head must not run with other weights before its backward pass.
+  const ObservationEncoder& encoder = policy_.encoder();
+  encoder.encode(head_target_, batch_.next_observations, /*record=*/false, target_pass_);
+  encoder.encode(policy_.head_parameters(), batch_.next_observations, /*record=*/false, next_pass_);
+  encoder.encode(policy_.head_parameters(), batch_.observations, /*record=*/true, batch_pass_);
+  inputs_ = &batch_pass_.encoded;
+  next_inputs_ = &next_pass_.encoded;
+  target_next_inputs_ = &target_pass_.encoded;
+  encoded_gradient_.setZero(encoder.encoded_size(), batch_.observations.cols());
+}
+
+void Sac::update_head(double learning_rate) {
+  policy_.encoder().backward(policy_.head_parameters(), batch_pass_, encoded_gradient_,
+                             head_gradient_);
+  if (config_.max_grad_norm) nn::clip_grad_norm(head_gradient_, *config_.max_grad_norm);
+  head_optimizer_.set_learning_rate(learning_rate);
+  head_optimizer_.step(policy_.head_parameters(), head_gradient_);
+  head_gradient_.setZero();
 }
 
 TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
@@ -69,9 +159,10 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
     // The actor and α step when this update's count is a multiple of policy_delay (TD3's rule).
     const bool actor_step = (gradient_updates() + 1) % config_.policy_delay == 0;
     buffer().sample(batch_size, sample_rng(), batch_);
+    encode_batch();
     // gSDE: one exploration matrix for the whole batch, new at every gradient step (SB3).
     if (config_.use_sde) exploration_ = policy_.standard_normal_matrix(sample_rng());
-    if (actor_step) policy_.sample(batch_.observations, sample_rng(), exploration_, current_);
+    if (actor_step) policy_.sample(*inputs_, sample_rng(), exploration_, current_);
 
     // α steps before the critics, and the critics and the actor use α from before that step,
     // as SB3.
@@ -81,8 +172,8 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
 
     // Critic targets: y = r + γ (1 − d) (min_i Q̄_i(s', a') − α log π(a'|s')), a' ~ π(·|s')
     // (eqs. 3, 5)
-    policy_.sample(batch_.next_observations, sample_rng(), exploration_, next_);
-    concatenate_rows(batch_.next_observations, policy_.actions_of(next_), critic_inputs_);
+    policy_.sample(*next_inputs_, sample_rng(), exploration_, next_);
+    concatenate_rows(*target_next_inputs_, policy_.actions_of(next_), critic_inputs_);
     critics_.forward(critic_inputs_, /*target=*/true);
     Eigen::VectorXf targets = (critics_.values().colwise().minCoeff().transpose().array() -
                                ent_coef * policy_.log_probs_of(next_).array())
@@ -96,11 +187,13 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
     }
 
     // Critic step on ½ Σ_i mean (Q_i(s, a) − y)².
-    concatenate_rows(batch_.observations, batch_.actions, critic_inputs_);
+    concatenate_rows(*inputs_, batch_.actions, critic_inputs_);
     critics_.forward(critic_inputs_, /*target=*/false);
     value_gradient_ = (critics_.values().rowwise() - targets.transpose()) * inverse_batch;
     critic_loss_sum += 0.5 * static_cast<double>(value_gradient_.squaredNorm()) * batch_size;
-    critics_.backward(value_gradient_, /*parameters=*/true, nullptr);
+    critics_.backward(value_gradient_, /*parameters=*/true,
+                      head_trains() ? &input_gradient_ : nullptr);
+    if (head_trains()) encoded_gradient_ += input_gradient_.topRows(encoded_gradient_.rows());
     critics_.step(learning_rate, config_.max_grad_norm);
 
     if (actor_step) {
@@ -109,16 +202,19 @@ TrainStats Sac::train(int64_t gradient_steps, double progress_remaining) {
       // CleanRL's catch-up: the steps the delay skipped, each on a new sample of the same batch.
       const int64_t extra = config_.compensate_policy_delay ? config_.policy_delay - 1 : 0;
       for (int64_t k = 0; k < extra; ++k) {
-        policy_.sample(batch_.observations, sample_rng(), exploration_, current_);
+        policy_.sample(*inputs_, sample_rng(), exploration_, current_);
         const auto coefficient = static_cast<float>(entropy_coefficient());
         ent_loss_sum += update_entropy_coefficient(learning_rate);
         actor_loss_sum += update_actor(coefficient, learning_rate);
         ++actor_steps;
       }
     }
+    if (head_trains()) update_head(learning_rate);
     count_update();
     if (gradient_updates() % config_.target_update_interval == 0) {
       critics_.update_target(config_.common.tau);
+      if (head_trains())
+        nn::polyak_update(head_target_, policy_.head_parameters(), config_.common.tau);
     }
   }
   const auto n = static_cast<double>(gradient_steps);
@@ -155,7 +251,7 @@ double Sac::update_actor(float ent_coef, double learning_rate) {
   const int64_t batch_size = config_.common.batch_size;
   const auto inverse_batch = 1.0f / static_cast<float>(batch_size);
   const int64_t a = action_size();
-  concatenate_rows(batch_.observations, policy_.actions_of(current_), critic_inputs_);
+  concatenate_rows(*inputs_, policy_.actions_of(current_), critic_inputs_);
   critics_.forward(critic_inputs_, /*target=*/false);
   const Eigen::MatrixXf& q = critics_.values();
   value_gradient_.setZero(q.rows(), q.cols());
@@ -168,6 +264,9 @@ double Sac::update_actor(float ent_coef, double learning_rate) {
   double loss = ent_coef * static_cast<double>(policy_.log_probs_of(current_).mean()) -
                 min_q_sum / static_cast<double>(batch_size);
   critics_.backward(value_gradient_, /*parameters=*/false, &input_gradient_);
+  // A trainable head also receives ∂L/∂(encoded observation) through the critics' inputs, and
+  // below through the actor's.
+  if (head_trains()) encoded_gradient_ += input_gradient_.topRows(encoded_gradient_.rows());
   if (actor_penalty_ != nullptr) {
     loss += actor_penalty_->add_gradient(batch_.observations, policy_.actions_of(current_),
                                          input_gradient_.bottomRows(a));
@@ -187,7 +286,9 @@ double Sac::update_actor(float ent_coef, double learning_rate) {
                                     actor_output_gradient_);
   }
   actor.backward(actor_parameters.head(network), current_.tape, actor_output_gradient_,
-                 actor_gradient_.head(network), nullptr, actor_scratch_);
+                 actor_gradient_.head(network), head_trains() ? &actor_input_gradient_ : nullptr,
+                 actor_scratch_);
+  if (head_trains()) encoded_gradient_ += actor_input_gradient_;
   if (config_.max_grad_norm) nn::clip_grad_norm(actor_gradient_, *config_.max_grad_norm);
   actor_optimizer_.set_learning_rate(learning_rate);
   actor_optimizer_.step(actor_parameters, actor_gradient_);
@@ -201,6 +302,11 @@ void Sac::write_own_state(ArchiveWriter& writer) const {
   critics_.save(writer, "critics");
   writer.put_floats("log_ent_coef", log_ent_coef_);
   save_adam(writer, "ent_coef_adam", ent_coef_optimizer_);
+  if (config_.head) {
+    writer.put_floats("head_parameters", policy_.head_parameters());
+    writer.put_floats("head_target", head_target_);
+    save_adam(writer, "head_adam", head_optimizer_);
+  }
 }
 
 std::function<void()> Sac::read_own_state(const ArchiveReader& reader) {
@@ -210,12 +316,26 @@ std::function<void()> Sac::read_own_state(const ArchiveReader& reader) {
   auto install_critics = critics_.prepare_load(reader, "critics");
   Eigen::VectorXf log_ent_coef = reader.get_floats("log_ent_coef", 1);
   auto install_ent_adam = prepare_adam(reader, "ent_coef_adam", ent_coef_optimizer_, 1);
+  Eigen::VectorXf head, head_target;
+  std::function<void()> install_head_adam = [] {};
+  if (config_.head) {
+    const auto size = policy_.head_parameters().size();
+    head = reader.get_floats("head_parameters", size);
+    head_target = reader.get_floats("head_target", size);
+    install_head_adam = prepare_adam(reader, "head_adam", head_optimizer_, size);
+  }
   return [=, this] {
     policy_.parameters() = actor;
     install_actor_adam();
     install_critics();
     log_ent_coef_ = log_ent_coef;
     install_ent_adam();
+    if (config_.head) {
+      policy_.head_parameters() = head;
+      head_target_ = head_target;
+      install_head_adam();
+      collected_.resize(0, 0);  // encodings by the loaded weights from now on
+    }
   };
 }
 

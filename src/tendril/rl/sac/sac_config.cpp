@@ -51,6 +51,7 @@ SacConfig SacConfig::from_config(const Config& algo) {
   config.use_sde = algo.get_or<bool>("use_sde", config.use_sde);
   config.sde_sample_freq = algo.get_or<int64_t>("sde_sample_freq", config.sde_sample_freq);
   config.log_std_init = algo.get_or<double>("log_std_init", config.log_std_init);
+  if (algo.has("head")) config.head = nn::FeatureHeadSpec::from_config(algo.child("head"));
   algo.reject_unknown();
   config.validate();
   return config;

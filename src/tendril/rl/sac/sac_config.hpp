@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "tendril/core/config.hpp"
+#include "tendril/nn/feature_heads.hpp"
 #include "tendril/rl/off_policy_config.hpp"
 
 namespace tendril::rl {
@@ -38,6 +39,9 @@ struct SacConfig {
   bool use_sde = false;
   int64_t sde_sample_freq = -1;
   double log_std_init = -3.0;
+  // A policy head feeding actor and critics (seed 001, thesis §5.1.2, Fig. 5.2; `head:` keys in
+  // nn::FeatureHeadSpec); none: the networks read the observation ("MLP No Head").
+  std::optional<nn::FeatureHeadSpec> head;
 
   static SacConfig sb3();
   // stable-baselines v2's SAC defaults (the Elastica paper's runs): buffer 50 000, batch 64,
@@ -46,7 +50,8 @@ struct SacConfig {
   // `preset: sb3 | sb2` and then, over it, the common off-policy keys and
   //   ent_coef (a number, `auto`, or `auto_<initial>` as SB3), target_entropy (a number or
   //   `auto`), target_update_interval, policy_delay, compensate_policy_delay, max_grad_norm (a
-  //   number or `none`), q_clip (a number or `none`), use_sde, sde_sample_freq, log_std_init.
+  //   number or `none`), q_clip (a number or `none`), use_sde, sde_sample_freq, log_std_init,
+  //   head (a mapping).
   static SacConfig from_config(const Config& algo);
 
   void validate() const;

@@ -4,6 +4,8 @@
 #include <memory>
 
 #include "tendril/nn/dense_mlp.hpp"
+#include "tendril/nn/feature_head.hpp"
+#include "tendril/rl/observation_encoder.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/sac/squashed_gaussian.hpp"
 #include "tendril/rl/sac/state_dependent_noise.hpp"
@@ -17,6 +19,10 @@ namespace tendril::rl {
 // The mode is tanh(μ) (gSDE: μ clipped to ±2 first). Not deterministic, it samples; with gSDE
 // each call draws a fresh exploration matrix from the given stream. The parameters are the
 // trained ones.
+//
+// With a policy head (seed 001, thesis §5.1.2) the network reads the encoded observation
+// [LayerNorm(head(history)); direct] (rl::ObservationEncoder) instead of the observation; the
+// head and its weights are part of the policy and of its model file.
 class SquashedGaussianPolicy : public Policy {
  public:
   // One reparameterised draw per column and the actor pass behind it.
@@ -26,9 +32,10 @@ class SquashedGaussianPolicy : public Policy {
     StateDependentNoiseSample sde;
   };
 
+  // `head` may be null (the network reads the observation).
   SquashedGaussianPolicy(const Space& observation_space, const Space& action_space,
                          const std::vector<int64_t>& hidden, nn::Activation activation,
-                         bool use_sde);
+                         bool use_sde, std::shared_ptr<const nn::FeatureHead> head = nullptr);
 
   std::string kind() const override { return "squashed_gaussian"; }
   const nn::DenseMlp& network() const { return network_; }
@@ -38,10 +45,15 @@ class SquashedGaussianPolicy : public Policy {
   Eigen::VectorXf& parameters() { return parameters_; }
   const Eigen::VectorXf& parameters() const { return parameters_; }
   Eigen::Map<const Eigen::MatrixXf> log_std() const;
+  // The head's reading of observations, and the head's weights (empty without a head).
+  const ObservationEncoder& encoder() const { return encoder_; }
+  Eigen::VectorXf& head_parameters() { return head_parameters_; }
+  const Eigen::VectorXf& head_parameters() const { return head_parameters_; }
 
-  // Draws a = tanh(μ + σ ε) for each column of `observations` (ε from `rng`), or with gSDE
-  // uses `exploration` as the matrix E.
-  void sample(const Eigen::Ref<const Eigen::MatrixXf>& observations, Rng& rng,
+  // Draws a = tanh(μ + σ ε) for each column of `inputs` — encoded observations
+  // (encoder().encode; the observations themselves without a head) — with ε from `rng`, or with
+  // gSDE uses `exploration` as the matrix E.
+  void sample(const Eigen::Ref<const Eigen::MatrixXf>& inputs, Rng& rng,
               const Eigen::MatrixXf& exploration, Sample& sample) const;
   const Eigen::MatrixXf& actions_of(const Sample& sample) const {
     return use_sde_ ? sample.sde.actions : sample.gaussian.actions;
@@ -64,9 +76,13 @@ class SquashedGaussianPolicy : public Policy {
 
  private:
   SquashedGaussianPolicy(const Space& observation_space, const Space& action_space,
-                         nn::DenseMlp network, bool use_sde);
+                         nn::DenseMlp network, bool use_sde,
+                         std::shared_ptr<const nn::FeatureHead> head);
 
-  nn::DenseMlp network_;  // observation → hidden → [μ; log σ], or μ with gSDE
+  ObservationEncoder encoder_;
+  Eigen::VectorXf head_parameters_;
+  mutable ObservationEncoder::Pass pass_;
+  nn::DenseMlp network_;  // encoded observation → hidden → [μ; log σ], or μ with gSDE
   bool use_sde_;
   int64_t latent_size_;
   Eigen::VectorXf parameters_;

@@ -2,8 +2,11 @@
 // the seeds; on, it repeats exactly for a seed and differs between seeds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include "tendril/core/error.hpp"
 #include "tendril/physics/twins/pneumatic/pneumatic_arm.hpp"
 
 namespace tendril::physics::pneumatic {
@@ -15,6 +18,7 @@ PneumaticArmSpec with_every_effect(uint64_t instance_seed = 0) {
   spec.effects.hysteresis = true;
   spec.effects.imbalance = true;
   spec.effects.sensor_noise = true;
+  spec.effects.elasticity = true;
   spec.instance_seed = instance_seed;
   return spec;
 }
@@ -52,6 +56,7 @@ TEST(PneumaticArmEffects, SwitchedOffTheTwinIsDeterministicWhateverTheSeeds) {
   a.begin_trial(8);
   EXPECT_EQ(a.measured_tip_positions(), rest);
   EXPECT_EQ(a.chamber_gains(), ChamberVector::Ones());
+  EXPECT_EQ(a.module_gains(), (Eigen::Matrix<double, 1, kModules>::Ones()));
 }
 
 TEST(PneumaticArmEffects, SwitchedOnTheyRepeatForASeedAndDifferBetweenSeeds) {
@@ -131,6 +136,44 @@ TEST(PneumaticArmEffects, EachEffectActsOnItsOwn) {
   const double error = (sensed.measured_tip_positions() - sensed.true_tip_positions()).norm();
   EXPECT_GT(error, 0.0);
   EXPECT_LT(error, 10.0 * noisy.effects.marker_noise);
+}
+
+// The elasticity of the day: every trial scales each module's response by its own factor
+// 1 + σξ (|ξ| ≤ 2), which moves nothing at rest and scales a module's bend.
+TEST(PneumaticArmEffects, TheElasticityOfTheDayScalesEachModulesResponse) {
+  PneumaticArm plain{PneumaticArmSpec{}};
+  ASSERT_TRUE(plain.begin_trial(0));
+  const TipPositions rest = plain.true_tip_positions();
+  ChamberVector commands = ChamberVector::Zero();
+  commands[chamber_index(2, 0)] = 1.5;  // module 3 bends
+  plain.set_commands(commands);
+  ASSERT_TRUE(plain.advance_samples(300));
+  const double plain_shift = (plain.true_tip_positions() - rest).col(2).norm();
+
+  PneumaticArmSpec spec;
+  spec.effects.elasticity = true;
+  spec.effects.elasticity_sigma = 0.1;
+  PneumaticArm arm(spec);
+  std::vector<double> module_3_gains;
+  for (int trial = 0; trial < 6; ++trial) {
+    ASSERT_TRUE(trial == 0 ? arm.begin_trial(7) : arm.begin_trial());
+    const auto gains = arm.module_gains();
+    EXPECT_TRUE((gains.array() >= 0.8).all() && (gains.array() <= 1.2).all()) << gains;
+    EXPECT_EQ(arm.true_tip_positions(), rest);  // at zero pressure nothing moves
+    module_3_gains.push_back(gains[2]);
+    arm.set_commands(commands);
+    ASSERT_TRUE(arm.advance_samples(300));
+    const double shift = (arm.true_tip_positions() - rest).col(2).norm();
+    EXPECT_NEAR(shift / plain_shift, gains[2], 0.1 * std::abs(gains[2] - 1.0) + 0.01) << trial;
+  }
+  std::sort(module_3_gains.begin(), module_3_gains.end());
+  EXPECT_GT(module_3_gains.back() - module_3_gains.front(), 0.05);
+  ASSERT_TRUE(arm.begin_trial(7));
+  const auto again = arm.module_gains();
+  ASSERT_TRUE(arm.begin_trial(7));
+  EXPECT_EQ(arm.module_gains(), again);
+  spec.effects.elasticity_sigma = 0.5;  // a module could lose all its response
+  EXPECT_THROW(PneumaticArm{spec}, Error);
 }
 
 TEST(PneumaticArmEffects, SnapshotsRepeatTheTwinExactly) {

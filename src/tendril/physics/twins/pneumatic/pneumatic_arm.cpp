@@ -1,5 +1,6 @@
 #include "tendril/physics/twins/pneumatic/pneumatic_arm.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -14,7 +15,12 @@ namespace tendril::physics::pneumatic {
 namespace {
 
 // Random streams of one twin, derived from its seeds.
-enum Stream : uint64_t { kDriftStream = 1, kSensorStream = 2, kInstanceStream = 3 };
+enum Stream : uint64_t {
+  kDriftStream = 1,
+  kSensorStream = 2,
+  kInstanceStream = 3,
+  kElasticityStream = 4
+};
 
 RodSpec rod_spec(const PneumaticArmSpec& spec) {
   spec.validate();
@@ -50,6 +56,7 @@ PneumaticArm::PneumaticArm(const PneumaticArmSpec& spec)
       rod_(rod_spec(spec)),
       capture_(sensor_spec(spec), Rng(0, kSensorStream)),
       drift_rng_(0, kDriftStream),
+      elasticity_rng_(0, kElasticityStream),
       steps_per_sample_(spec.steps_per_sample()) {
   const Eigen::Vector3d gravity(0.0, 0.0, -spec_.gravity);
   Vectors offsets = Vectors::Zero(3, spec_.n_elements());
@@ -99,6 +106,7 @@ PneumaticArm::PneumaticArm(const PneumaticArmSpec& spec)
 bool PneumaticArm::begin_trial(std::optional<uint64_t> seed) {
   if (seed) {
     drift_rng_ = Rng(*seed, kDriftStream);
+    elasticity_rng_ = Rng(*seed, kElasticityStream);
     capture_.set_rng(Rng(*seed, kSensorStream));
     drift_angles_.setZero();
   }
@@ -120,9 +128,25 @@ bool PneumaticArm::begin_trial(std::optional<uint64_t> seed) {
       rod_.save_state(out);
     }
   }
+  // At zero pressure the elasticity moves nothing, so it is set after settling (a settled
+  // snapshot holds the modules' gains of the trial that made it).
+  if (spec_.effects.elasticity) {
+    draw_elasticity();
+  } else {
+    modules_->set_module_gains(Eigen::Matrix<double, 1, kModules>::Ones());
+  }
   trial_start_ = rod_.time();
   capture_.restart(true_tip_positions());
   return finite;
+}
+
+void PneumaticArm::draw_elasticity() {
+  Eigen::Matrix<double, 1, kModules> gains;
+  for (int m = 0; m < kModules; ++m) {
+    const double xi = std::clamp(elasticity_rng_.normal(), -2.0, 2.0);
+    gains[m] = 1.0 + spec_.effects.elasticity_sigma * xi;
+  }
+  modules_->set_module_gains(gains);
 }
 
 void PneumaticArm::step_drift() {
@@ -162,6 +186,7 @@ void PneumaticArm::save_state(SnapshotWriter& out) const {
   rod_.save_state(out);
   capture_.save_state(out);
   out.put(drift_rng_);
+  out.put(elasticity_rng_);
   out.put_matrix(drift_angles_);
   out.put(trial_start_);
 }
@@ -177,11 +202,14 @@ void PneumaticArm::load_state(SnapshotReader& in) {
     capture.load_state(in);
     Rng drift_rng = drift_rng_;
     in.get(drift_rng);
+    Rng elasticity_rng = elasticity_rng_;
+    in.get(elasticity_rng);
     Eigen::Matrix<double, 2, kModules> drift_angles;
     in.get_matrix(drift_angles);
     const double trial_start = in.get_double();
     capture_ = std::move(capture);
     drift_rng_ = drift_rng;
+    elasticity_rng_ = elasticity_rng;
     drift_angles_ = drift_angles;
     trial_start_ = trial_start;
   } catch (...) {

@@ -18,9 +18,9 @@ namespace tendril::physics::pneumatic {
 // (MassEccentricity and chamber gains), resting-position drift between trials, and the motion
 // capture that samples the three module tips at 100 Hz.
 //
-// Time advances in whole sensor samples. The twin holds its own random streams: the drift walk
-// and the sensor noise, both reseeded by begin_trial(seed) — a trial begun with the same seed
-// from the same configuration repeats exactly.
+// Time advances in whole sensor samples. The twin holds its own random streams: the drift walk,
+// the elasticity of the day and the sensor noise, all reseeded by begin_trial(seed) — a trial
+// begun with the same seed from the same configuration repeats exactly.
 class PneumaticArm {
  public:
   explicit PneumaticArm(const PneumaticArmSpec& spec);
@@ -31,7 +31,8 @@ class PneumaticArm {
   // Starts a trial: the rod straight at rest, chambers vented, hysteresis cleared; the resting
   // drift takes one step of its walk (with a seed: the walk and the sensor restart from that
   // seed, the drift from zero); the arm then settles for settle_time at zero pressure and the
-  // sensor restarts from that state. Returns false if the state became non-finite.
+  // sensor restarts from that state; the modules then take the trial's elasticity. Returns false
+  // if the state became non-finite.
   bool begin_trial(std::optional<uint64_t> seed = std::nullopt);
 
   // Pressure commands, bar, any finite values (Error otherwise); the regulators clamp them.
@@ -52,6 +53,10 @@ class PneumaticArm {
   const Eigen::Matrix<double, 2, kModules>& drift_angles() const { return drift_angles_; }
   // The instance's chamber gains (all 1 without imbalance).
   const ChamberVector& chamber_gains() const { return gains_; }
+  // This trial's elasticity factor per module (all 1 without the effect).
+  const Eigen::Matrix<double, 1, kModules>& module_gains() const {
+    return modules_->module_gains();
+  }
 
   const Rod& rod() const { return rod_; }
   const PneumaticArmSpec& spec() const { return spec_; }
@@ -64,6 +69,7 @@ class PneumaticArm {
 
  private:
   void step_drift();
+  void draw_elasticity();
 
   PneumaticArmSpec spec_;
   ChamberVector gains_ = ChamberVector::Ones();
@@ -73,6 +79,7 @@ class PneumaticArm {
   Snapshot settled_;                     // rod_ after settling without drift (cached)
   MotionCapture capture_;
   Rng drift_rng_;
+  Rng elasticity_rng_;
   Eigen::Matrix<double, 2, kModules> drift_angles_ = Eigen::Matrix<double, 2, kModules>::Zero();
   double trial_start_ = 0.0;
   int steps_per_sample_;

@@ -36,6 +36,10 @@ void StochasticEffects::validate() const {
   }
   require_non_negative(eccentricity, "eccentricity", where);
   require_non_negative(marker_noise, "marker_noise", where);
+  if (!(elasticity_sigma >= 0.0 && elasticity_sigma < 0.5)) {
+    throw Error("elasticity_sigma must lie in [0, 0.5), got " + std::to_string(elasticity_sigma),
+                where);
+  }
 }
 
 int PneumaticArmSpec::steps_per_sample() const {

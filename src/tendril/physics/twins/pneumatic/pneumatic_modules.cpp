@@ -74,7 +74,7 @@ void PneumaticModules::add_loads(const RodModel& model, RodState& state) {
     double sum = 0.0;
     for (int c = 0; c < kChambersPerModule; ++c) {
       const int k = chamber_index(m, c);
-      const double y = spec_.gains[k] * effective[k];
+      const double y = module_gains_[m] * spec_.gains[k] * effective[k];
       sum += y;
       module_curvature.col(m) += y * curvature_per_bar_.col(k);
     }
@@ -99,11 +99,18 @@ void PneumaticModules::add_loads(const RodModel& model, RodState& state) {
   loads_.add(model, state, stretch_, curvature_);
 }
 
+void PneumaticModules::set_module_gains(const Eigen::Matrix<double, 1, kModules>& gains) {
+  require(gains.allFinite() && (gains.array() >= 0.0).all(),
+          "module gains must be finite and non-negative", "PneumaticModules");
+  module_gains_ = gains;
+}
+
 void PneumaticModules::save_state(SnapshotWriter& out) const {
   out.section("PneumaticModules");
   regulators_.save_state(out);
   hysteresis_.save_state(out);
   out.put_matrix(bias_);
+  out.put_matrix(module_gains_);
 }
 
 void PneumaticModules::load_state(SnapshotReader& in) {
@@ -111,12 +118,15 @@ void PneumaticModules::load_state(SnapshotReader& in) {
   PressureRegulators regulators = regulators_;
   PlayHysteresis hysteresis = hysteresis_;
   Eigen::Matrix<double, 2, kModules> bias;
+  Eigen::Matrix<double, 1, kModules> module_gains;
   regulators.load_state(in);
   hysteresis.load_state(in);
   in.get_matrix(bias);
+  in.get_matrix(module_gains);
   regulators_ = regulators;
   hysteresis_ = hysteresis;
   bias_ = bias;
+  module_gains_ = module_gains;
 }
 
 }  // namespace tendril::physics::pneumatic

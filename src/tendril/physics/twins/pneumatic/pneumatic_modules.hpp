@@ -39,9 +39,10 @@ struct ModuleActuationSpec {
 // pressure, through the regulators' lag and the material's hysteresis, is an effective
 // pressure y_k; a module's chambers then impose a spontaneous (active) strain on every element
 // of the module (physics/forcing/active_strain.hpp):
-//   axial strain   δσ₃ = extension_per_bar · (Σ_k g_k y_k) / 3
-//   curvature      δκ  = (bend_per_bar / L_m) · Σ_k g_k y_k · (r̂_k × d3) + drift bias
-// with r̂_k the chamber's unit position in the cross-section (material frame). An extending
+//   axial strain   δσ₃ = extension_per_bar · G_m (Σ_k g_k y_k) / 3
+//   curvature      δκ  = (bend_per_bar / L_m) · G_m Σ_k g_k y_k · (r̂_k × d3) + drift bias
+// with r̂_k the chamber's unit position in the cross-section (material frame), g_k the chamber's
+// gain and G_m the module's gain of the trial (set_module_gains). An extending
 // chamber lengthens its side of the module, so a single chamber bends the module away from
 // itself, in the plane through the axis and the chamber; three equal pressures cancel in δκ
 // and only extend. At a Voronoi point on the joint between two modules the mean of both
@@ -70,6 +71,10 @@ class PneumaticModules final : public RodPart {
   // along d1 and d2, 1/m), set between trials.
   void set_curvature_bias(const Eigen::Matrix<double, 2, kModules>& bias) { bias_ = bias; }
   const Eigen::Matrix<double, 2, kModules>& curvature_bias() const { return bias_; }
+  // Elasticity of the day: a factor on every strain a module's chambers produce (1 = nominal),
+  // set between trials.
+  void set_module_gains(const Eigen::Matrix<double, 1, kModules>& gains);
+  const Eigen::Matrix<double, 1, kModules>& module_gains() const { return module_gains_; }
 
   // Material-frame direction (d1, d2) of the curvature one chamber produces per bar, 1/m.
   Eigen::Vector2d curvature_per_bar(int chamber) const { return curvature_per_bar_.col(chamber); }
@@ -79,6 +84,7 @@ class PneumaticModules final : public RodPart {
   PressureRegulators regulators_;
   PlayHysteresis hysteresis_;
   Eigen::Matrix<double, 2, kModules> bias_ = Eigen::Matrix<double, 2, kModules>::Zero();
+  Eigen::Matrix<double, 1, kModules> module_gains_ = Eigen::Matrix<double, 1, kModules>::Ones();
   Eigen::Matrix<double, 2, kChambers> curvature_per_bar_;  // set at attach
   Vectors stretch_, curvature_;  // per element / per Voronoi point, reused every step
   ActiveStrainLoads loads_;
