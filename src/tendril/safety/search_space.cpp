@@ -120,9 +120,12 @@ std::unique_ptr<SearchSpace> search_space_of(Env& env) {
   if (const auto* car = envs::find_wrapper<DubinsCar>(env)) {
     return std::make_unique<DubinsCarSpace>(car->params());
   }
+  if (const auto* limb = envs::find_wrapper<LearnedSafetyEnv>(env)) {
+    return std::make_unique<LearnedLimbSpace>(limb->params());
+  }
   throw Error(
       "the environment has no search space for the safety filter's tools (safe-control "
-      "environments have one)",
+      "environments and the limb's safety task have one)",
       "safety::search_space_of");
 }
 
