@@ -55,16 +55,20 @@ TEST(EpsilonSearch, HalvesTheStepWhenTheOutcomeFlipsAndMovesAlongTheGradient) {
   EXPECT_NEAR(run.epsilon, 2.7, 100.0 * last_alpha * 2.0 + 1e-9);
 }
 
-// With unit_gradient each move is ±α along ∇V's direction: the search bisects the boundary in
-// state units whatever V's scale (here ∇V = 10).
-TEST(EpsilonSearch, UnitGradientStepsMoveByTheStepSize) {
-  const EpsilonSearchProblem problem = scripted_problem();
+// One search from x = 1 with unit-gradient steps (α₀ = 0.2, δ = 0.05).
+EpsilonSearchRun unit_gradient_search(bool survivor_value) {
   EpsilonSearchOptions options;
   options.step_size = 0.2;
   options.tolerance = 0.05;
   options.unit_gradient = true;
-  const EpsilonSearchRun run =
-      search_epsilon_once(problem, options, Eigen::VectorXd::Constant(1, 1.0));
+  options.survivor_value = survivor_value;
+  return search_epsilon_once(scripted_problem(), options, Eigen::VectorXd::Constant(1, 1.0));
+}
+
+// With unit_gradient each move is ±α along ∇V's direction: the search bisects the boundary in
+// state units whatever V's scale (here ∇V = 10).
+TEST(EpsilonSearch, UnitGradientStepsMoveByTheStepSize) {
+  const EpsilonSearchRun run = unit_gradient_search(/*survivor_value=*/false);
   ASSERT_TRUE(run.converged);
   for (size_t k = 0; k + 1 < run.trace.size(); ++k) {
     const bool survived = run.trace[k].episode_length == 50;
@@ -76,14 +80,7 @@ TEST(EpsilonSearch, UnitGradientStepsMoveByTheStepSize) {
 
 // survivor_value reports V at the last state that survived: at or above the boundary's 2.7.
 TEST(EpsilonSearch, SurvivorValueIsTheLastSurvivingStatesValue) {
-  const EpsilonSearchProblem problem = scripted_problem();
-  EpsilonSearchOptions options;
-  options.step_size = 0.2;
-  options.tolerance = 0.05;
-  options.unit_gradient = true;
-  options.survivor_value = true;
-  const EpsilonSearchRun run =
-      search_epsilon_once(problem, options, Eigen::VectorXd::Constant(1, 1.0));
+  const EpsilonSearchRun run = unit_gradient_search(/*survivor_value=*/true);
   double last_survivor = 0.0;
   for (const EpsilonSearchStep& step : run.trace) {
     if (step.episode_length == 50) last_survivor = step.value;
