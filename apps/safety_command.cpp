@@ -29,7 +29,7 @@ constexpr const char* kUsage =
     "       tendril safety eval <run> [--epsilon E[,E...]] [--episodes N] [--seed S]\n"
     "                               [--task RUN|random] [--csv FILE] [--trajectory FILE]\n"
     "       tendril safety search <run> [--restarts N] [--step-size A] [--tolerance D]\n"
-    "                                 [--seed S] [--csv FILE]\n"
+    "                                 [--seed S] [--csv FILE] [--final-value]\n"
     "       tendril safety map <run> --out FILE [--resolution N] [--extent X] [--axes I,J]\n"
     "                              [--fixed V,...] [--epsilon E[,E...]]\n"
     "       tendril safety diamond <run> [--epsilon E[,E...]] [--trials N] [--seed S]\n"
@@ -114,14 +114,18 @@ std::filesystem::path run_directory_of(const CommandLine& line, const rl::Experi
                          : new_run_directory(task.output);
 }
 
+void print_start(const rl::Experiment& task, const std::string& with,
+                 const std::filesystem::path& run) {
+  std::printf("training %s with %s on %s for %lld steps, seed %llu -> %s\n", task.algorithm.c_str(),
+              with.c_str(), task.env.id.c_str(), static_cast<long long>(task.n_timesteps),
+              static_cast<unsigned long long>(task.seed), run.string().c_str());
+}
+
 int train_baseline(const CommandLine& line, const Config& config) {
   const safety::ConstrainedExperiment baseline = safety::ConstrainedExperiment::from_config(config);
   const rl::Experiment& task = baseline.task;
   const std::filesystem::path run = run_directory_of(line, task);
-  std::printf("training %s with the %s baseline on %s for %lld steps, seed %llu -> %s\n",
-              task.algorithm.c_str(), baseline.method.c_str(), task.env.id.c_str(),
-              static_cast<long long>(task.n_timesteps), static_cast<unsigned long long>(task.seed),
-              run.string().c_str());
+  print_start(task, "the " + baseline.method + " baseline", run);
   const auto result = safety::train_constrained(baseline, run);
   std::printf("trained in %.1f s; multiplier %.4g, E[Q_risk] %.4f; model: %s/model.policy\n",
               result.seconds, result.final_multiplier, result.final_cost_value,
@@ -136,10 +140,7 @@ int train(const std::vector<std::string>& rest) {
   const safety::SafetyExperiment co_trained = safety::SafetyExperiment::from_config(config);
   const rl::Experiment& task = co_trained.task;
   const std::filesystem::path run = run_directory_of(line, task);
-  std::printf("training %s with a %s safety agent on %s for %lld steps, seed %llu -> %s\n",
-              task.algorithm.c_str(), co_trained.safety_algorithm.c_str(), task.env.id.c_str(),
-              static_cast<long long>(task.n_timesteps), static_cast<unsigned long long>(task.seed),
-              run.string().c_str());
+  print_start(task, "a " + co_trained.safety_algorithm + " safety agent", run);
   const safety::SafetyTrainResult result = safety::train_with_safety(co_trained, run);
   std::printf(
       "trained in %.1f s; safety buffer: %lld stored, %lld gated, %lld unsafe entries; "
@@ -184,11 +185,13 @@ int eval(const std::vector<std::string>& rest) {
 }
 
 int search(const std::vector<std::string>& rest) {
-  const CommandLine line =
-      CommandLine::parse(rest, {"restarts", "step-size", "tolerance", "seed", "csv"}, {});
+  const CommandLine line = CommandLine::parse(
+      rest, {"restarts", "step-size", "tolerance", "seed", "csv"}, {"final-value"});
   require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
   const std::filesystem::path run = line.positional[0];
   safety::EpsilonSearchOptions options;
+  options.unit_gradient = true;
+  options.survivor_value = !line.has("final-value");
   options.restarts = static_cast<int>(line.integer("restarts", options.restarts, 1, 100000));
   if (line.has("step-size")) {
     options.step_size = parse_number(line.value("step-size", ""), "--step-size");

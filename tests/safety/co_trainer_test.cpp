@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "one_step.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/dqn/dqn.hpp"
 #include "tendril/rl/sac/sac.hpp"
@@ -29,17 +30,8 @@ rl::DqnConfig small_dqn() {
 // One hand-made vector step of one environment: x → x' with action `action`.
 void feed(SafetyCoTrainer& trainer, const Eigen::Vector3f& x, float action,
           const Eigen::Vector3f& next, bool done, int64_t timesteps) {
-  envs::BatchMatrix observations = x.transpose();
-  envs::BatchMatrix actions(1, 1);
-  actions(0, 0) = action;
-  envs::VecStep step;
-  step.observations = next.transpose();
-  step.final_observations = next.transpose();
-  step.rewards = Eigen::VectorXf::Zero(1);
-  step.terminated = {0};
-  step.truncated = {static_cast<uint8_t>(done ? 1 : 0)};
-  step.infos.resize(1);
-  trainer.on_step({observations, actions, step, timesteps});
+  trainer.on_step(
+      testing::OneStep(x, Eigen::VectorXf::Constant(1, action), next, done).event(timesteps));
 }
 
 TEST(SafetyCoTrainer, GateClosesAtTheFirstUnsafeTransitionAndReopensWithTheEpisode) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "one_step.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
 #include "tendril/rl/sac/sac.hpp"
@@ -16,21 +17,11 @@ std::unique_ptr<envs::VecEnv> double_integrator() {
   return rl::make_vec_env(options);
 }
 
-// One hand-made vector step x → x' with action u (env units) and cost c.
+// One step x → x' with action u (env units) and cost c.
 void feed(CostCritic& critic, float x, float u, float next, float cost, int64_t timesteps) {
-  envs::BatchMatrix observations(1, 3), actions(1, 1);
-  observations << x, 0.0f, 0.0f;
-  actions << u;
-  envs::VecStep step;
-  step.observations.resize(1, 3);
-  step.observations << next, 0.0f, 0.0f;
-  step.final_observations = step.observations;
-  step.rewards = Eigen::VectorXf::Zero(1);
-  step.terminated = {0};
-  step.truncated = {0};
-  step.infos.resize(1);
-  step.infos[0].set(info_keys::kCost, cost);
-  critic.on_step({observations, actions, step, timesteps});
+  testing::OneStep one(Eigen::Vector3f(x, 0.0f, 0.0f), Eigen::VectorXf::Constant(1, u),
+                       Eigen::Vector3f(next, 0.0f, 0.0f));
+  critic.on_step(one.info(info_keys::kCost, cost).event(timesteps));
 }
 
 // A two-step chain under every action: from x = 0 the next state is x = 1 (no cost), from x = 1
@@ -73,16 +64,9 @@ TEST(CostCritic, RefusesAnEnvironmentWithoutCostAndBadSettings) {
   auto env = double_integrator();
   rl::Sac task(*env, rl::SacConfig::from_config(Config::parse("net_arch: [16]")), 3);
   CostCritic critic(task.policy(), CostCriticSettings{}, 5);
-  envs::BatchMatrix observations = envs::BatchMatrix::Zero(1, 3),
-                    actions = envs::BatchMatrix::Zero(1, 1);
-  envs::VecStep step;
-  step.observations = observations;
-  step.final_observations = observations;
-  step.rewards = Eigen::VectorXf::Zero(1);
-  step.terminated = {0};
-  step.truncated = {0};
-  step.infos.resize(1);  // no "cost"
-  EXPECT_THROW(critic.on_step({observations, actions, step, 1}), Error);
+  const testing::OneStep no_cost(Eigen::Vector3f::Zero(), Eigen::VectorXf::Zero(1),
+                                 Eigen::Vector3f::Zero());
+  EXPECT_THROW(critic.on_step(no_cost.event(1)), Error);
   EXPECT_THROW(CostCriticSettings::from_config(Config::parse("gamma: 1.0")), Error);
   EXPECT_THROW(CostCriticSettings::from_config(Config::parse("net_arch: []")), Error);
 }

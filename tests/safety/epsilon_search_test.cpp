@@ -55,6 +55,41 @@ TEST(EpsilonSearch, HalvesTheStepWhenTheOutcomeFlipsAndMovesAlongTheGradient) {
   EXPECT_NEAR(run.epsilon, 2.7, 100.0 * last_alpha * 2.0 + 1e-9);
 }
 
+// One search from x = 1 with unit-gradient steps (α₀ = 0.2, δ = 0.05).
+EpsilonSearchRun unit_gradient_search(bool survivor_value) {
+  EpsilonSearchOptions options;
+  options.step_size = 0.2;
+  options.tolerance = 0.05;
+  options.unit_gradient = true;
+  options.survivor_value = survivor_value;
+  return search_epsilon_once(scripted_problem(), options, Eigen::VectorXd::Constant(1, 1.0));
+}
+
+// With unit_gradient each move is ±α along ∇V's direction: the search bisects the boundary in
+// state units whatever V's scale (here ∇V = 10).
+TEST(EpsilonSearch, UnitGradientStepsMoveByTheStepSize) {
+  const EpsilonSearchRun run = unit_gradient_search(/*survivor_value=*/false);
+  ASSERT_TRUE(run.converged);
+  for (size_t k = 0; k + 1 < run.trace.size(); ++k) {
+    const bool survived = run.trace[k].episode_length == 50;
+    EXPECT_NEAR(run.trace[k + 1].state[0] - run.trace[k].state[0],
+                (survived ? -1.0 : 1.0) * run.trace[k].step_size, 1e-12);
+  }
+  EXPECT_NEAR(run.epsilon, 2.7, 10.0 * 2.0 * run.trace.back().step_size + 1e-9);
+}
+
+// survivor_value reports V at the last state that survived: at or above the boundary's 2.7.
+TEST(EpsilonSearch, SurvivorValueIsTheLastSurvivingStatesValue) {
+  const EpsilonSearchRun run = unit_gradient_search(/*survivor_value=*/true);
+  double last_survivor = 0.0;
+  for (const EpsilonSearchStep& step : run.trace) {
+    if (step.episode_length == 50) last_survivor = step.value;
+  }
+  EXPECT_EQ(run.epsilon, last_survivor);
+  EXPECT_GE(run.epsilon, 2.7);
+  EXPECT_LT(run.epsilon, 2.7 + 10.0 * 0.2);
+}
+
 TEST(EpsilonSearch, TakesTheMaximumOverRestartsAndRedrawsNonPositiveStarts) {
   EpsilonSearchProblem problem = scripted_problem();
   int draws = 0;

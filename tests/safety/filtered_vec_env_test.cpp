@@ -2,18 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include "scripted_critic.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
 namespace tendril::safety {
 namespace {
 
-// Q_s(x, u) = x₀ − u₀ on the double integrator's observation [x, ẋ, t/T]: known by hand.
-class ScriptedCritic : public SafetyCritic {
- public:
-  double value(const Observation& x, const Action& u) const override { return x[0] - u[0]; }
-  Action safe_action(const Observation&) const override { return Action::Constant(1, -1.0f); }
-};
+// Q_s(x, u) = x₀ − u₀ on the double integrator's observation [x, ẋ, t/T].
+using testing::ScriptedCritic;
 
 std::unique_ptr<envs::VecEnv> two_double_integrators() {
   rl::VecEnvOptions options;

@@ -2,17 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include "scripted_critic.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::safety {
 namespace {
 
-// Q_s(x, u) = x₀ − u₀, safe action −1: a critic whose values are known by hand.
-class ScriptedCritic : public SafetyCritic {
- public:
-  double value(const Observation& x, const Action& u) const override { return x[0] - u[0]; }
-  Action safe_action(const Observation&) const override { return Action::Constant(1, -1.0f); }
-};
+using testing::ScriptedCritic;
 
 TEST(SafetyFilter, PassesTheTaskActionAboveTheThresholdAndOverridesAtOrBelow) {
   const ScriptedCritic critic;

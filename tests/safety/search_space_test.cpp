@@ -54,6 +54,27 @@ TEST(SearchSpace, DubinsCarPlacesPositionAndHeading) {
   for (int k = 0; k < 100; ++k) EXPECT_LE(space->sample(rng).cwiseAbs().maxCoeff(), 1.0);
 }
 
+// The limb's safety task (on the torch-free stand-in model): (θx, θy, θ̇x, θ̇y) over the 30° radius.
+TEST(SearchSpace, LearnedLimbPlacesAngleAndRateInRadiusUnits) {
+  auto env = envs::make("SmaLimb/LearnedSafety-v0");
+  const auto space = search_space_of(*env);
+  ASSERT_EQ(space->dimension(), 4);
+  EXPECT_EQ(space->names()[0], "theta_x");
+  EXPECT_FALSE(space->analytically_safe(Eigen::Vector4d::Zero()).has_value());
+  const Eigen::Vector4d s(0.5, -0.25, 0.1, 0.0);  // (15°, −7.5°), θ̇x = 3 °/s
+  const Observation x = space->observation(s);
+  ASSERT_EQ(x.size(), 5);
+  EXPECT_FLOAT_EQ(x[0], 15.0f);
+  EXPECT_FLOAT_EQ(x[1], -7.5f);
+  EXPECT_FLOAT_EQ(x[2], 3.0f);
+  EXPECT_FLOAT_EQ(x[4], 0.0f);
+  env->reset(0);
+  space->place(*env, s);
+  const Step step = env->step(Action::Constant(1, 0.0f));
+  EXPECT_LT(std::abs(step.observation[0] - 15.0f), 5.0f);  // one step on from the placed state
+  EXPECT_LT(std::abs(step.observation[1] + 7.5f), 5.0f);
+}
+
 TEST(SearchSpace, RefusesAnEnvironmentWithoutOne) {
   auto env = envs::make("Pendulum-v1");
   EXPECT_THROW(search_space_of(*env), Error);

@@ -29,12 +29,24 @@ EpsilonSearchRun search_epsilon_once(const EpsilonSearchProblem& problem,
     // Algorithm 3, lines 8–18: halve α when the outcome differs from the last one.
     if (survived != survived_before) alpha *= 0.5;
     run.trace.push_back({x, value, length, alpha});
-    const Eigen::VectorXd gradient = problem.gradient(x);
+    Eigen::VectorXd gradient = problem.gradient(x);
+    if (options.unit_gradient) {
+      const double norm = gradient.norm();
+      gradient = norm > 0.0 ? (gradient / norm).eval() : Eigen::VectorXd::Zero(x.size());
+    }
     x += (survived ? -alpha : alpha) * gradient;
     length_prev = length;
     value = problem.value(x);
   }
   run.epsilon = value;
+  if (options.survivor_value) {
+    for (auto step = run.trace.rbegin(); step != run.trace.rend(); ++step) {
+      if (step->episode_length >= problem.max_episode_length) {
+        run.epsilon = step->value;
+        break;
+      }
+    }
+  }
   return run;
 }
 

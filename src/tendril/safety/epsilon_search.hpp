@@ -28,6 +28,16 @@ struct EpsilonSearchOptions {
   int restarts = 20;         // the maximum over restarts is taken
   int max_iterations = 200;  // per restart, a guard the algorithm box does not have
   int max_start_draws = 10000;
+  // Move by α along the gradient's direction, x ∓ α ∇V/‖∇V‖, instead of the box's x ∓ α ∇V, so
+  // that α is a length in state units whatever the value's scale: a learned V falls by about
+  // 1/(1 − γ) across the boundary of X_unsafe, and a raw gradient step would leave the state
+  // space. (No move where ∇V = 0.)
+  bool unit_gradient = false;
+  // Report V at the last state whose rollout survived (the safe side of the boundary the search
+  // brackets) instead of V at the final state. Where V drops to the unsafe value −1/(1 − γ)
+  // across the boundary — every safe state recoverable, as for a car that can stop — the final
+  // state lies on either side, and on the unsafe side V says nothing about the boundary.
+  bool survivor_value = false;
 };
 
 // One iteration of a search: the state, its value, the episode length from it, and the step
@@ -40,7 +50,7 @@ struct EpsilonSearchStep {
 };
 
 struct EpsilonSearchRun {
-  double epsilon = 0.0;  // V_safe at the final state
+  double epsilon = 0.0;  // V_safe at the final state (or the last survivor, survivor_value)
   std::vector<EpsilonSearchStep> trace;
   bool converged = false;  // |V − V_prev| ≤ δ before max_iterations
 };

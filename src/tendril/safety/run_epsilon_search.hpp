@@ -13,7 +13,8 @@ namespace tendril::safety {
 // units; the SAC critic's V goes through its actor), and an episode is the safety policy's
 // greedy rollout from s, whose length counts the steps before the first unsafe state (T_max =
 // the environment's horizon when it never enters X_unsafe). Restarts draw s uniformly over the
-// safe box (redrawn until V(s) > 0); `seed` seeds the draws and the environment.
+// safe box (redrawn until V(s) > 0); `seed` seeds the draws and the environment. The CLI moves
+// by unit gradients (EpsilonSearchOptions::unit_gradient), α in normalized state units.
 struct RunEpsilonSearch {
   EpsilonSearchResult result;
   std::vector<std::string> state_names;

@@ -72,6 +72,7 @@ RunSafetyEvaluation evaluate_safety_run(const std::filesystem::path& run_directo
           "safety is judged on raw observations: the run normalizes them", run_directory.string());
   Config params = run.env.params;
   if (params.has("unsafe_penalty")) params.set("unsafe_penalty", "0");
+  if (params.has("start_anywhere")) params.set("start_anywhere", "false");
   auto env = envs::make(run.env.id, params);
   const auto constraint = constraint_of(*env);
 

@@ -43,7 +43,8 @@ struct TaskSource {
 };
 
 // A run evaluated on the same episodes without and, when it has a safety.critic, with the filter
-// at ε₂. Returns are the task reward's: an environment's `unsafe_penalty` is set to 0 for this.
+// at ε₂. Returns are the task reward's and the starts the task's: an environment's
+// `unsafe_penalty` is set to 0 and its training aid `start_anywhere` to false for this.
 struct RunSafetyEvaluation {
   double epsilon = 0.0;
   SafetyEvaluation unfiltered;

@@ -35,7 +35,9 @@ class DoubleIntegratorSpace : public SearchSpace {
     di->set_state(s[0] * scales_[0], s[1] * scales_[1]);
   }
   Eigen::VectorXd sample(Rng& rng) const override {
-    return Eigen::Vector2d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+    Eigen::Vector2d s;
+    s << rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0);  // drawn left to right
+    return s;
   }
   std::optional<bool> analytically_safe(const Eigen::VectorXd& s) const override {
     return DoubleIntegrator::in_analytic_safe_set(params_, s[0] * scales_[0], s[1] * scales_[1]);
@@ -70,7 +72,9 @@ class DubinsCarSpace : public SearchSpace {
     car->set_state(s[0] * scales_[0], s[1] * scales_[1], s[2] * scales_[2]);
   }
   Eigen::VectorXd sample(Rng& rng) const override {
-    return Eigen::Vector3d(rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0));
+    Eigen::Vector3d s;
+    s << rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0);
+    return s;
   }
 
  private:
@@ -116,9 +120,12 @@ std::unique_ptr<SearchSpace> search_space_of(Env& env) {
   if (const auto* car = envs::find_wrapper<DubinsCar>(env)) {
     return std::make_unique<DubinsCarSpace>(car->params());
   }
+  if (const auto* limb = envs::find_wrapper<LearnedSafetyEnv>(env)) {
+    return std::make_unique<LearnedLimbSpace>(limb->params());
+  }
   throw Error(
       "the environment has no search space for the safety filter's tools (safe-control "
-      "environments have one)",
+      "environments and the limb's safety task have one)",
       "safety::search_space_of");
 }
 

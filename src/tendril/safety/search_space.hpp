@@ -38,7 +38,8 @@ class SearchSpace {
 
 // The search space of a safe-control environment (envs/safe_control/), found through any
 // wrappers: the double integrator's (x, ẋ) over (2 m, 3 m/s), the Dubins car's (x, y, ψ) over
-// (2 m, 2 m, π rad) with the default geometry. Raises Error for other environments.
+// (2 m, 2 m, π rad) with the default geometry, the limb safety task's (θx, θy, θ̇x, θ̇y) over its
+// safe radius (30° and 30 °/s). Raises Error for other environments.
 std::unique_ptr<SearchSpace> search_space_of(Env& env);
 
 }  // namespace tendril::safety

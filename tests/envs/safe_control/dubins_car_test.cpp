@@ -74,6 +74,22 @@ TEST(DubinsCar, StartsInTheLowerLeftAndRejectsBadParams) {
   EXPECT_THROW(DubinsCar::create(Config::parse("sped: 1")), Error);
 }
 
+// start_anywhere: starts spread over the whole safe set, in every quadrant and heading.
+TEST(DubinsCar, StartsAnywhereInTheSafeSetWhenAsked) {
+  DubinsCar::Params params;
+  params.start_anywhere = true;
+  DubinsCar env(params);
+  int upper_right = 0, heading_down = 0;
+  for (uint64_t seed = 0; seed < 200; ++seed) {
+    const Observation o = env.reset(seed);
+    EXPECT_GT(DubinsCar::safety_margin(params, o[0], o[1]), 0.0);
+    upper_right += o[0] > 0.0f && o[1] > 0.0f ? 1 : 0;
+    heading_down += o[3] < 0.0f ? 1 : 0;
+  }
+  EXPECT_GT(upper_right, 20);
+  EXPECT_GT(heading_down, 60);
+}
+
 // The reward-penalty baseline: −penalty on a step into the keep-out disc, nothing outside it.
 TEST(DubinsCar, UnsafePenaltyIsSubtractedOnlyInTheUnsafeSet) {
   DubinsCar::Params penalized;
@@ -133,7 +149,7 @@ TEST(DubinsCar, SpeedControlMakesTheSpeedAnInput) {
   EXPECT_DOUBLE_EQ(env.state()[0], -1.5);
   env.step(Eigen::Vector2f(0.0f, 0.6f));
   EXPECT_NEAR(env.state()[0], -1.5 + 0.6 * 0.05, 1e-8);  // v = 0.6f
-  env.step(Eigen::Vector2f(0.0f, 5.0f));  // held to 1.2 m/s
+  env.step(Eigen::Vector2f(0.0f, 5.0f));                 // held to 1.2 m/s
   EXPECT_NEAR(env.state()[0], -1.5 + 1.8 * 0.05, 1e-8);
   EXPECT_THROW(DubinsCar::create(Config::parse("speed_control: true\ndiscrete_actions: 5")), Error);
   EXPECT_THROW(DubinsCar::create(Config::parse("speed_control: true\nmin_speed: 2.0")), Error);

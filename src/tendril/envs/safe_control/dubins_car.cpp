@@ -30,6 +30,7 @@ std::unique_ptr<Env> DubinsCar::create(const Config& params) {
   p.start_high = params.get_or("start_high", p.start_high);
   p.heading_low = params.get_or("heading_low", p.heading_low);
   p.heading_high = params.get_or("heading_high", p.heading_high);
+  p.start_anywhere = params.get_or("start_anywhere", p.start_anywhere);
   p.unsafe_penalty = params.get_or("unsafe_penalty", p.unsafe_penalty);
   p.speed_control = params.get_or("speed_control", p.speed_control);
   p.min_speed = params.get_or("min_speed", p.min_speed);
@@ -104,9 +105,18 @@ double DubinsCar::commanded_speed(const Action& action) const {
 
 Observation DubinsCar::reset(std::optional<uint64_t> seed) {
   if (seed) rng_ = Rng(*seed);
-  x_ = rng_.uniform(params_.start_low, params_.start_high);
-  y_ = rng_.uniform(params_.start_low, params_.start_high);
-  heading_ = rng_.uniform(params_.heading_low, params_.heading_high);
+  if (params_.start_anywhere) {
+    const double box = params_.box_limit;
+    do {  // rejection: the disc and the walls are outside the safe set
+      x_ = rng_.uniform(-box, box);
+      y_ = rng_.uniform(-box, box);
+    } while (safety_margin(params_, x_, y_) <= 0.0);
+    heading_ = rng_.uniform(-std::numbers::pi, std::numbers::pi);
+  } else {
+    x_ = rng_.uniform(params_.start_low, params_.start_high);
+    y_ = rng_.uniform(params_.start_low, params_.start_high);
+    heading_ = rng_.uniform(params_.heading_low, params_.heading_high);
+  }
   elapsed_steps_ = 0;
   return observe();
 }

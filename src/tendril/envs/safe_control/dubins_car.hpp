@@ -55,6 +55,10 @@ class DubinsCar : public Env {
     // Starts: x, y uniform in [start_low, start_high], ψ uniform in [heading_low, heading_high].
     double start_low = -1.8, start_high = -1.3;                   // m
     double heading_low = 0.0, heading_high = 1.5707963267948966;  // rad
+    // Training starts over the whole safe set instead (position uniform over the box outside the
+    // disc, heading uniform), so that a safety critic learned from the rollouts sees all of it;
+    // evaluations (safety::evaluate_safety_run) switch it off and judge the task's starts.
+    bool start_anywhere = false;
     // The reward-penalty baseline of seed 001 Table 6.1: subtracted from the reward of every step
     // that ends in X_unsafe (the thesis gives no size; 0 leaves the task reward alone).
     double unsafe_penalty = 0.0;
