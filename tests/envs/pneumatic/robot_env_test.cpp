@@ -81,6 +81,15 @@ TEST(RobotEnv, BadParametersAndActionsAreNamed) {
             std::string::npos);
   EXPECT_NE(error_message([] { robot("twin: {ceiling_bar: 5}\n"); }).find("ceiling_bar"),
             std::string::npos);
+  EXPECT_NE(error_message([] { robot("damaged_chamber: 3\n"); }).find("damaged_chamber"),
+            std::string::npos);
+  for (const char* fraction : {"1", "-0.1", ".nan"}) {
+    EXPECT_NE(error_message([&] { robot(std::string("damaged_fraction: ") + fraction + "\n"); })
+                  .find("damaged_fraction"),
+              std::string::npos)
+        << fraction;
+  }
+  EXPECT_NO_THROW(robot("stochastic: false\nscenario: S1\ndamaged_fraction: 0.5\n"));
   const auto env = robot("{}");
   env->reset(0);
   Action action = Action::Zero(9);
