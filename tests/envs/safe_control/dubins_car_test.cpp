@@ -155,5 +155,34 @@ TEST(DubinsCar, SpeedControlMakesTheSpeedAnInput) {
   EXPECT_THROW(DubinsCar::create(Config::parse("speed_control: true\nmin_speed: 2.0")), Error);
 }
 
+TEST(DubinsCar, DiscreteSpeedsPairEveryTurnRateWithEverySpeedLevel) {
+  DubinsCar::Params params;
+  params.speed_control = true;
+  params.discrete_actions = 3;  // ω ∈ {−2, 0, 2} rad/s
+  params.discrete_speeds = 3;   // v ∈ {0, 0.6, 1.2} m/s
+  DubinsCar env(params);
+  ASSERT_TRUE(env.action_space().is_discrete());
+  ASSERT_EQ(env.action_space().n(), 9);
+  const auto index = [](int k) { return Action::Constant(1, static_cast<float>(k)); };
+  EXPECT_DOUBLE_EQ(env.turn_rate(index(0)), -2.0);
+  EXPECT_DOUBLE_EQ(env.commanded_speed(index(0)), 0.0);
+  EXPECT_DOUBLE_EQ(env.turn_rate(index(5)), 2.0);  // k mod 3 = 2
+  EXPECT_DOUBLE_EQ(env.commanded_speed(index(5)), 0.6);  // k div 3 = 1
+  EXPECT_DOUBLE_EQ(env.turn_rate(index(7)), 0.0);
+  EXPECT_DOUBLE_EQ(env.commanded_speed(index(7)), 1.2);
+  env.reset(0);
+  env.set_state(-1.5, -1.5, 0.0);
+  env.step(index(1));  // straight, stopped
+  EXPECT_DOUBLE_EQ(env.state()[0], -1.5);
+  env.step(index(7));  // straight at 1.2 m/s
+  EXPECT_NEAR(env.state()[0], -1.5 + 1.2 * 0.05, 1e-12);
+  EXPECT_THROW(env.step(index(9)), Error);
+  EXPECT_THROW(DubinsCar::create(Config::parse("speed_control: true\ndiscrete_speeds: 3")), Error);
+  EXPECT_THROW(DubinsCar::create(Config::parse("discrete_actions: 3\ndiscrete_speeds: 3")), Error);
+  EXPECT_THROW(
+      DubinsCar::create(Config::parse("speed_control: true\ndiscrete_actions: 3\ndiscrete_speeds: 1")),
+      Error);
+}
+
 }  // namespace
 }  // namespace tendril::envs::safe_control

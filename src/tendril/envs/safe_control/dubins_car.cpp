@@ -26,6 +26,7 @@ std::unique_ptr<Env> DubinsCar::create(const Config& params) {
   p.dt = params.get_or("dt", p.dt);
   p.horizon = params.get_or("horizon", p.horizon);
   p.discrete_actions = params.get_or("discrete_actions", p.discrete_actions);
+  p.discrete_speeds = params.get_or("discrete_speeds", p.discrete_speeds);
   p.start_low = params.get_or("start_low", p.start_low);
   p.start_high = params.get_or("start_high", p.start_high);
   p.heading_low = params.get_or("heading_low", p.heading_low);
@@ -48,8 +49,14 @@ DubinsCar::DubinsCar(Params params) : params_(params) {
           "need 0 ≤ obstacle_radius < box_limit < absolute_limit", who);
   require(params_.discrete_actions == 0 || params_.discrete_actions >= 2,
           "discrete_actions must be 0 (continuous) or at least 2", who);
-  require(!params_.speed_control || params_.discrete_actions == 0,
-          "speed_control needs continuous actions (discrete_actions: 0)", who);
+  require(params_.discrete_speeds == 0 || params_.discrete_speeds >= 2,
+          "discrete_speeds must be 0 or at least 2", who);
+  require(params_.speed_control || params_.discrete_speeds == 0,
+          "discrete_speeds needs speed_control", who);
+  require(!params_.speed_control || (params_.discrete_actions == 0) == (params_.discrete_speeds == 0),
+          "speed_control takes continuous actions (discrete_actions: 0) or both discrete_actions "
+          "and discrete_speeds",
+          who);
   require(params_.min_speed >= 0.0 && params_.min_speed <= params_.speed,
           "min_speed must lie in [0, speed]", who);
   require(params_.start_low <= params_.start_high && params_.heading_low <= params_.heading_high,
@@ -65,7 +72,7 @@ DubinsCar::DubinsCar(Params params) : params_(params) {
   high << inf, inf, 1.0f, 1.0f, 1.0f;
   observation_space_ = Space::box(low, high);
   if (params_.discrete_actions > 0) {
-    action_space_ = Space::discrete(params_.discrete_actions);
+    action_space_ = Space::discrete(params_.discrete_actions * std::max(params_.discrete_speeds, 1));
   } else if (params_.speed_control) {
     action_space_ = Space::box(Eigen::Vector2f(static_cast<float>(-params_.max_turn_rate),
                                                static_cast<float>(params_.min_speed)),
@@ -92,15 +99,24 @@ double DubinsCar::turn_rate(const Action& action) const {
   const double w_max = params_.max_turn_rate;
   if (params_.discrete_actions == 0)
     return std::clamp(static_cast<double>(action[0]), -w_max, w_max);
+  const int64_t turn = discrete_index(action) % params_.discrete_actions;
+  return -w_max + 2.0 * w_max * static_cast<double>(turn) / (params_.discrete_actions - 1);
+}
+
+int64_t DubinsCar::discrete_index(const Action& action) const {
   const auto index = static_cast<int64_t>(action[0]);
-  require(index >= 0 && index < params_.discrete_actions, "action index out of range", kId);
-  return -w_max + 2.0 * w_max * static_cast<double>(index) / (params_.discrete_actions - 1);
+  require(index >= 0 && index < action_space_.n(), "action index out of range", kId);
+  return index;
 }
 
 double DubinsCar::commanded_speed(const Action& action) const {
   if (!params_.speed_control) return params_.speed;
   check_action(action_space_, action, kId);
-  return std::clamp(static_cast<double>(action[1]), params_.min_speed, params_.speed);
+  if (params_.discrete_speeds == 0)
+    return std::clamp(static_cast<double>(action[1]), params_.min_speed, params_.speed);
+  const int64_t level = discrete_index(action) / params_.discrete_actions;
+  return params_.min_speed + (params_.speed - params_.min_speed) * static_cast<double>(level) /
+                                 (params_.discrete_speeds - 1);
 }
 
 Observation DubinsCar::reset(std::optional<uint64_t> seed) {

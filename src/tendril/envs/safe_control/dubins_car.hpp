@@ -52,6 +52,9 @@ class DubinsCar : public Env {
     double dt = 0.05;                   // s per step
     int horizon = 200;                  // steps T
     int discrete_actions = 0;           // 0: Box ω; n ≥ 2: n turn rates over [−ω_max, ω_max]
+  // With speed_control and n discrete turn rates: m ≥ 2 speeds over [min_speed, speed], the
+  // action index k meaning turn rate k mod n and speed k div n (n·m actions, for a DQN agent).
+  int discrete_speeds = 0;
     // Starts: x, y uniform in [start_low, start_high], ψ uniform in [heading_low, heading_high].
     double start_low = -1.8, start_high = -1.3;                   // m
     double heading_low = 0.0, heading_high = 1.5707963267948966;  // rad
@@ -82,7 +85,8 @@ class DubinsCar : public Env {
   void set_state(double x, double y, double heading, int elapsed_steps = 0);
   Eigen::Vector3d state() const { return {x_, y_, heading_}; }
   double turn_rate(const Action& action) const;
-  // The speed an action commands (m/s): `speed`, or its clamped second entry with speed_control.
+  // The speed an action commands (m/s): `speed`, or with speed_control its clamped second entry
+  // (Box) or its speed level (Discrete).
   double commanded_speed(const Action& action) const;
 
   // d of eq. (6.4), m: the smallest distance to the box walls and to the disc.
@@ -94,6 +98,7 @@ class DubinsCar : public Env {
 
  private:
   Observation observe() const;
+  int64_t discrete_index(const Action& action) const;
 
   Params params_;
   Space observation_space_, action_space_;
