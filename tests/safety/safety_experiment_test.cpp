@@ -68,7 +68,7 @@ TEST(SafetyExperiment, ReadsTheSafetySectionAndRefusesBadKeys) {
 
 // The shipped experiments of configs/safety/ read, with their safety sections.
 TEST(SafetyExperiment, ShippedConfigsAreValid) {
-  for (const char* name : {"double_integrator_sac.yaml", "dubins_dqn.yaml"}) {
+  for (const char* name : {"double_integrator_sac.yaml", "dubins_dqn.yaml", "dubins_dqn_speed.yaml"}) {
     const SafetyExperiment e = SafetyExperiment::from_config(
         Config::load_file(std::string(TENDRIL_CONFIG_DIR) + "/safety/" + name));
     EXPECT_EQ(e.safety_algorithm, e.task.algorithm) << name;
