@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -114,6 +115,15 @@ inline double max_difference(const Eigen::VectorXf& a, const Eigen::VectorXf& b)
   EXPECT_EQ(a.size(), b.size());
   if (a.size() != b.size()) return 1e30;
   return static_cast<double>((a - b).cwiseAbs().maxCoeff());
+}
+
+// The rounding a float32 computation of v may carry: `ulps` units in the last place of its largest
+// entry. A Polyak average τ·θ + (1 − τ)·θ' that moves θ' by ~τ·step is compared within a
+// fraction of that move plus this, since two correct orders of the same float operations (or
+// one FMA more under other compiler flags) differ by an ulp.
+inline double float_rounding(const Eigen::VectorXf& v, int ulps = 4) {
+  return ulps * static_cast<double>(std::numeric_limits<float>::epsilon()) *
+         static_cast<double>(v.cwiseAbs().maxCoeff());
 }
 
 }  // namespace tendril::testing

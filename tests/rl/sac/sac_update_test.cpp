@@ -248,7 +248,8 @@ TEST_P(SacUpdate, MatchesStableBaselines3UpdateWrittenWithAutograd) {
   EXPECT_GT(max_difference(end.critics, start.critics), 0.5 * step_size);
   EXPECT_LT(max_difference(end.critics, reference.critics()), 1e-3 * step_size);
   EXPECT_GT(max_difference(end.critics_target, start.critics_target), 0.1 * tau * step_size);
-  EXPECT_LT(max_difference(end.critics_target, reference.targets()), 1e-3 * tau * step_size);
+  EXPECT_LT(max_difference(end.critics_target, reference.targets()),
+            1e-3 * tau * step_size + float_rounding(end.critics_target));
   EXPECT_NEAR(end.log_ent_coef[0], reference.log_ent_coef(), 1e-3 * step_size);
   if (config.auto_entropy) {
     EXPECT_GT(std::abs(end.log_ent_coef[0] - start.log_ent_coef[0]), 0.5 * step_size);
