@@ -53,7 +53,8 @@ DubinsCar::DubinsCar(Params params) : params_(params) {
           "discrete_speeds must be 0 or at least 2", who);
   require(params_.speed_control || params_.discrete_speeds == 0,
           "discrete_speeds needs speed_control", who);
-  require(!params_.speed_control || (params_.discrete_actions == 0) == (params_.discrete_speeds == 0),
+  const bool discrete_turns = params_.discrete_actions > 0;
+  require(!params_.speed_control || discrete_turns == (params_.discrete_speeds > 0),
           "speed_control takes continuous actions (discrete_actions: 0) or both discrete_actions "
           "and discrete_speeds",
           who);

@@ -52,9 +52,9 @@ class DubinsCar : public Env {
     double dt = 0.05;                   // s per step
     int horizon = 200;                  // steps T
     int discrete_actions = 0;           // 0: Box ω; n ≥ 2: n turn rates over [−ω_max, ω_max]
-  // With speed_control and n discrete turn rates: m ≥ 2 speeds over [min_speed, speed], the
-  // action index k meaning turn rate k mod n and speed k div n (n·m actions, for a DQN agent).
-  int discrete_speeds = 0;
+    // With speed_control and n discrete turn rates: m ≥ 2 speeds over [min_speed, speed], the
+    // action index k meaning turn rate k mod n and speed k div n (n·m actions, for a DQN agent).
+    int discrete_speeds = 0;
     // Starts: x, y uniform in [start_low, start_high], ψ uniform in [heading_low, heading_high].
     double start_low = -1.8, start_high = -1.3;                   // m
     double heading_low = 0.0, heading_high = 1.5707963267948966;  // rad
