@@ -99,6 +99,16 @@ TEST(OffPolicyIdentity, DqnSolvesDiscreteIdentity) {
             90.0);
 }
 
+// The bounded head Q = B·tanh(z): Identity's values (≤ 1/(1 − γ) = 2) lie inside B = 4.
+TEST(OffPolicyIdentity, DqnWithABoundedHeadSolvesDiscreteIdentity) {
+  EXPECT_GE(identity_score("dqn", "Identity-v0",
+                           "gamma: 0.5\nlearning_starts: 100\nlearning_rate: 1e-3\n"
+                           "target_update_interval: 100\nexploration_fraction: 0.3\n"
+                           "train_freq: 1\nq_bound: 4\n",
+                           5000),
+            90.0);
+}
+
 // Deterministic actions of an agent on fixed observations.
 envs::BatchMatrix probe(OffPolicyAlgorithm& agent, int observation_size) {
   envs::BatchMatrix observations(5, observation_size);
@@ -350,6 +360,10 @@ TEST(OffPolicyBadInput, ConfigErrorsNameTheKey) {
   EXPECT_NE(testing::error_message([] {
               DqnConfig::from_config(Config::parse("polyak: 1"));
             }).find("polyak"),
+            std::string::npos);
+  EXPECT_NE(testing::error_message([] {
+              DqnConfig::from_config(Config::parse("q_bound: -100"));
+            }).find("q_bound"),
             std::string::npos);
   EXPECT_NE(testing::error_message([] {
               SacConfig::from_config(Config::parse("learner_threads: 0"));

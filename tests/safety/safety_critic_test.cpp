@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "tendril/core/error.hpp"
 #include "tendril/rl/dqn/dqn.hpp"
@@ -47,9 +49,10 @@ TEST(SafetyCriticFile, SacCriticRoundTripsExactly) {
   }
 }
 
-TEST(SafetyCriticFile, DqnCriticRoundTripsExactly) {
+// algo: the DQN keys; bound: the largest |Q| allowed (infinity: unbounded).
+void expect_dqn_critic_round_trips(const std::string& algo, double bound) {
   auto env = double_integrator("discrete_actions: 5");
-  rl::Dqn agent(*env, rl::DqnConfig::from_config(Config::parse("net_arch: [16, 16]")), 9);
+  rl::Dqn agent(*env, rl::DqnConfig::from_config(Config::parse(algo)), 9);
   const DqnSafetyCritic critic(dynamic_cast<const rl::QGreedyPolicy&>(agent.policy()));
   const auto file = temp_file("dqn.critic");
   critic.save(file);
@@ -59,8 +62,18 @@ TEST(SafetyCriticFile, DqnCriticRoundTripsExactly) {
     for (int u = 0; u < 5; ++u) {
       const Action action = Action::Constant(1, static_cast<float>(u));
       EXPECT_EQ(loaded->value(x, action), critic.value(x, action));
+      EXPECT_LT(std::abs(critic.value(x, action)), bound);
     }
   }
+}
+
+TEST(SafetyCriticFile, DqnCriticRoundTripsExactly) {
+  expect_dqn_critic_round_trips("net_arch: [16, 16]", std::numeric_limits<double>::infinity());
+}
+
+// The thesis' limb critic ends in (1/(1 − γ))·tanh: the bound is part of the file.
+TEST(SafetyCriticFile, BoundedDqnCriticRoundTripsWithItsBound) {
+  expect_dqn_critic_round_trips("{net_arch: [16, 16], q_bound: 0.05}", 0.05);
 }
 
 TEST(SafetyCriticFile, CorruptOrForeignFilesAreRefusedNamingTheFile) {

@@ -135,21 +135,16 @@ void DqnSafetyCritic::write(ArchiveWriter& writer) const {
                                  reinterpret_cast<const std::byte*>(policy.data()), policy.size()));
 }
 
-const Eigen::MatrixXf& DqnSafetyCritic::q_values(const Observation& observation) const {
-  q_policy_.network().forward(q_policy_.parameters(), observation, tape_);
-  return tape_.output();
-}
-
 double DqnSafetyCritic::value(const Observation& observation, const Action& action) const {
   const auto index = static_cast<Eigen::Index>(action[0]);
-  const Eigen::MatrixXf& q = q_values(observation);
+  const Eigen::MatrixXf& q = q_policy_.q_values(observation);
   require(index >= 0 && index < q.rows(), "action index out of range", "DqnSafetyCritic");
   return static_cast<double>(q(index, 0));
 }
 
 Action DqnSafetyCritic::safe_action(const Observation& observation) const {
   Eigen::Index best = 0;
-  q_values(observation).col(0).maxCoeff(&best);
+  q_policy_.q_values(observation).col(0).maxCoeff(&best);
   return Action::Constant(1, static_cast<float>(best));
 }
 

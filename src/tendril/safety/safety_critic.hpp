@@ -68,7 +68,8 @@ class SacSafetyCritic : public SafetyCritic {
   mutable Eigen::MatrixXf inputs_;
 };
 
-// A DQN safety agent: Q_s(x, ·) is the Q-network's output; the greedy action its arg max.
+// A DQN safety agent: Q_s(x, ·) is the Q-network's (QGreedyPolicy::q_values); the greedy
+// action its arg max.
 // Borrows the network's policy.
 class DqnSafetyCritic : public SafetyCritic {
  public:
@@ -83,11 +84,8 @@ class DqnSafetyCritic : public SafetyCritic {
   void write(ArchiveWriter& writer) const override;
 
  private:
-  const Eigen::MatrixXf& q_values(const Observation& observation) const;
-
   std::unique_ptr<const rl::QGreedyPolicy> owned_q_policy_;
   const rl::QGreedyPolicy& q_policy_;
-  mutable nn::DenseMlp::Tape tape_;
 };
 
 }  // namespace tendril::safety

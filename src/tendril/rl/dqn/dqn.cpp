@@ -11,7 +11,7 @@ Dqn::Dqn(envs::VecEnv& env, const DqnConfig& config, uint64_t seed)
     : OffPolicyAlgorithm("DQN", env, config.common, seed),
       config_(config),
       policy_(env.observation_space(), env.action_space(), config.common.net_arch,
-              config.common.activation) {
+              config.common.activation, config.q_bound.value_or(0.0)) {
   config_.validate();
   Eigen::VectorXf& parameters = policy_.parameters();
   Rng init_rng = init_stream();
@@ -56,7 +56,8 @@ TrainStats Dqn::train(int64_t gradient_steps, double progress_remaining) {
     buffer().sample(config_.common.batch_size, sample_rng(), batch_);
     gradient_.setZero();
     loss_sum += dqn_loss(policy_.network(), policy_.parameters(), target_, batch_,
-                         config_.common.gamma, config_.double_q, loss_workspace_, gradient_);
+                         config_.common.gamma, config_.double_q, policy_.q_bound(),
+                         loss_workspace_, gradient_);
     if (config_.max_grad_norm) nn::clip_grad_norm(gradient_, *config_.max_grad_norm);
     optimizer_.step(policy_.parameters(), gradient_);
   }

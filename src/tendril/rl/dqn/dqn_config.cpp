@@ -1,5 +1,7 @@
 #include "tendril/rl/dqn/dqn_config.hpp"
 
+#include <cmath>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::rl {
@@ -28,6 +30,7 @@ DqnConfig DqnConfig::from_config(const Config& algo) {
       algo.get_or<double>("exploration_final_eps", config.exploration_final_eps);
   config.max_grad_norm = algo.get_optional("max_grad_norm", config.max_grad_norm);
   config.double_q = algo.get_or<bool>("double_q", config.double_q);
+  config.q_bound = algo.get_optional("q_bound", config.q_bound);
   algo.reject_unknown();
   config.validate();
   return config;
@@ -43,6 +46,8 @@ void DqnConfig::validate() const {
   require(probability(exploration_initial_eps) && probability(exploration_final_eps),
           "exploration rates must lie in [0, 1]", where);
   require(!max_grad_norm || *max_grad_norm > 0.0, "max_grad_norm must be positive", where);
+  require(!q_bound || (*q_bound > 0.0 && std::isfinite(*q_bound)),
+          "q_bound must be a positive number or none", where);
 }
 
 }  // namespace tendril::rl

@@ -19,11 +19,13 @@ struct DqnConfig {
   double exploration_final_eps = 0.05;
   std::optional<double> max_grad_norm = 10.0;
   bool double_q = false;  // van Hasselt et al. 2016: the online network picks a'
+  // A bounded Q-head, Q = q_bound·tanh(z) (QGreedyPolicy); none: a linear head, as SB3's.
+  std::optional<double> q_bound;
 
   static DqnConfig sb3();
   // `preset: sb3` and then, over it, the common off-policy keys and target_update_interval,
   // exploration_fraction, exploration_initial_eps, exploration_final_eps, max_grad_norm (a
-  // number or `none`), double_q.
+  // number or `none`), double_q, q_bound (a number or `none`).
   static DqnConfig from_config(const Config& algo);
 
   void validate() const;

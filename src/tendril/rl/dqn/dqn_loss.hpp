@@ -22,9 +22,12 @@ struct DqnLossWorkspace {
 // 2016, eq. 4); Q has `parameters`, Q̄ `target_parameters`, and y is a constant. Returns L and
 // adds ∂L/∂parameters to `gradient`. Huber is smooth L1 with δ = 1, whose derivative is the
 // error clamped to [−1, 1] (autograd's, ties included).
+//
+// With a positive `q_bound` B, Q = B·tanh(z) for the network's output z (its output layer is
+// tanh, QGreedyPolicy's bounded head); with 0, Q = z.
 double dqn_loss(const nn::DenseMlp& q_network, const Eigen::Ref<const Eigen::VectorXf>& parameters,
                 const Eigen::Ref<const Eigen::VectorXf>& target_parameters,
-                const ReplayBuffer::Batch& batch, double gamma, bool double_q,
+                const ReplayBuffer::Batch& batch, double gamma, bool double_q, double q_bound,
                 DqnLossWorkspace& workspace, Eigen::Ref<Eigen::VectorXf> gradient);
 
 }  // namespace tendril::rl
