@@ -218,6 +218,25 @@ TEST(Trainer, ResumedOffPolicyRunWithItsReplayBufferEqualsTheUninterruptedRun) {
   EXPECT_NE(read_text(whole / "progress.csv").find("train/ent_coef"), std::string::npos);
 }
 
+// Without its buffer a resumed off-policy run starts learning again from nothing: it says so.
+TEST(Trainer, ResumingWithoutTheReplayBufferWarns) {
+  const fs::path run = fresh("sac_no_buffer");
+  train(off_policy_experiment({{"save_replay_buffer", "false"}}), run,
+        {.stop_at = 1000, .quiet = true});
+  EXPECT_FALSE(fs::exists(run / "checkpoints" / "step_1000.buffer"));
+  ::testing::internal::CaptureStderr();
+  resume(run, {.stop_at = 1500, .quiet = true});
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(log.find("empty replay buffer"), std::string::npos) << log;
+
+  const fs::path kept = fresh("sac_buffer_kept");
+  train(off_policy_experiment(), kept, {.stop_at = 1000, .quiet = true});
+  ::testing::internal::CaptureStderr();
+  resume(kept, {.stop_at = 1500, .quiet = true});
+  EXPECT_EQ(::testing::internal::GetCapturedStderr().find("empty replay buffer"),
+            std::string::npos);
+}
+
 TEST(Trainer, CorruptReplayBufferIsReportedAndLeftAlone) {
   const fs::path run = fresh("sac_corrupt");
   train(off_policy_experiment(), run, {.stop_at = 1000, .quiet = true});

@@ -174,6 +174,12 @@ class Run {
       log::warning("skipped ", reason, " (kept as .corrupt); resuming from ",
                    checkpoint.filename().string());
     }
+    if (algorithm_->has_replay_buffer() && !with_buffer) {
+      log::warning("resuming from ", checkpoint.filename().string(),
+                   " with an empty replay buffer: this run does not keep its buffer "
+                   "(save_replay_buffer: false), so from here on it differs from an "
+                   "uninterrupted run");
+    }
     remove_leftovers(directory_);
   }
 
