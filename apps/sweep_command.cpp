@@ -28,7 +28,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path this_program() { return fs::read_symlink("/proc/self/exe"); }
+// This executable's path. Rebuilt while a long sweep runs, the old file is gone and the link
+// reads "<path> (deleted)": the path then names the new build, which is the one to run.
+fs::path this_program() {
+  std::string path = fs::read_symlink("/proc/self/exe").string();
+  constexpr std::string_view kDeleted = " (deleted)";
+  if (path.ends_with(kDeleted)) path.resize(path.size() - kDeleted.size());
+  return path;
+}
 
 // Runs `tendril plot <args>` (a child process: matplotlib lives in Python); true on success.
 bool plot(const std::vector<std::string>& args) {
