@@ -1,0 +1,130 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tendril/core/error.hpp"
+#ifdef TENDRIL_WITH_DYNAMICS
+#include "tendril/dynamics/env_model_loader.hpp"
+#endif
+#include "tendril/rl/experiment.hpp"
+#include "tendril/rl/sweep.hpp"
+#include "tendril/safety/constrained_experiment.hpp"
+#include "tendril/safety/safety_experiment.hpp"
+
+// Every training experiment and sweep file under configs/ reads: each key is known and valid,
+// and the environment builds (rl::Experiment builds it once). A file that starts from the
+// output of an earlier step (a learned model under runs/, a data set under data/) reads when
+// that output exists and otherwise fails with an error naming it. Paths in the files are
+// relative to the repository's root, as the README's commands run from there.
+namespace tendril {
+namespace {
+
+const std::filesystem::path kRoot = std::filesystem::path(TENDRIL_CONFIG_DIR).parent_path();
+
+std::vector<std::filesystem::path> yaml_files() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(TENDRIL_CONFIG_DIR)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml") {
+      files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The runs/ and data/ paths a file reads from (its `output:` excluded) that do not exist.
+std::vector<std::string> missing_inputs(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> missing;
+  const std::regex path_pattern(R"(\b(?:runs|data)/[A-Za-z0-9_./-]+)");
+  std::string line;
+  while (std::getline(in, line)) {
+    line = line.substr(0, line.find('#'));
+    if (line.find("output:") != std::string::npos) continue;
+    for (std::sregex_iterator it(line.begin(), line.end(), path_pattern), end; it != end; ++it) {
+      if (!std::filesystem::exists(kRoot / it->str())) missing.push_back(it->str());
+    }
+  }
+  return missing;
+}
+
+// Reads a training experiment as its command would: `tendril safety train` for a file with a
+// safety or constrained section, `tendril train` otherwise.
+void read_experiment(const Config& config) {
+  if (config.has("safety")) {
+    safety::SafetyExperiment::from_config(config);
+  } else if (config.has("constrained")) {
+    safety::ConstrainedExperiment::from_config(config);
+  } else {
+    rl::Experiment::from_config(config);
+  }
+}
+
+// Runs `read` and checks its outcome: success, or, for a file that lacks one of its inputs, an
+// Error naming a missing input.
+template <typename Read>
+void expect_reads(const std::filesystem::path& file, Read read) {
+  const std::vector<std::string> missing = missing_inputs(file);
+  try {
+    read();
+  } catch (const Error& error) {
+    const std::string message = error.what();
+    const bool names_missing = std::any_of(missing.begin(), missing.end(), [&](const auto& path) {
+      return message.find(path) != std::string::npos;
+    });
+    EXPECT_TRUE(names_missing) << file << ": " << message;
+  }
+}
+
+class InRepositoryRoot : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    previous_ = std::filesystem::current_path();
+    std::filesystem::current_path(kRoot);
+#ifdef TENDRIL_WITH_DYNAMICS
+    dynamics::install_model_loader();
+#endif
+  }
+  void TearDown() override { std::filesystem::current_path(previous_); }
+
+ private:
+  std::filesystem::path previous_;
+};
+
+TEST_F(InRepositoryRoot, EveryShippedTrainingExperimentReads) {
+  int experiments = 0;
+  for (const auto& file : yaml_files()) {
+    const Config config = Config::load_file(file);
+    if (!config.has("algorithm") || config.has("grid")) continue;
+    ++experiments;
+    SCOPED_TRACE(file.string());
+    expect_reads(file, [&] { read_experiment(config); });
+  }
+  EXPECT_GE(experiments, 60);  // the glob found configs/'s experiments
+}
+
+TEST_F(InRepositoryRoot, EveryRunOfEveryShippedSweepReads) {
+  int sweeps = 0;
+  for (const auto& file : yaml_files()) {
+    if (!Config::load_file(file).has("grid")) continue;
+    ++sweeps;
+    SCOPED_TRACE(file.string());
+    const rl::Sweep sweep = rl::Sweep::load(file);
+    const std::vector<rl::Sweep::Run> runs = sweep.runs();
+    EXPECT_FALSE(runs.empty());
+    for (const auto& run : runs) {
+      SCOPED_TRACE(run.name);
+      expect_reads(sweep.experiment_file, [&] { read_experiment(sweep.experiment(run)); });
+    }
+  }
+  EXPECT_GE(sweeps, 40);
+}
+
+}  // namespace
+}  // namespace tendril
