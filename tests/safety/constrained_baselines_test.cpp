@@ -7,6 +7,7 @@
 #include "tendril/rl/trainer.hpp"
 #include "tendril/safety/constrained_experiment.hpp"
 #include "tendril/safety/safety_evaluation.hpp"
+#include "support/scratch_directory.hpp"
 
 // Table 6.1's baselines (seed 001 §6.4) learn on a small case where the task conflicts with
 // safety: the double integrator with its goal moved to x = 2.5 m, beyond the safe 2 m, so the
@@ -33,19 +34,11 @@ std::string constrained_section(const std::string& method, const std::string& mu
          multiplier + "\n";
 }
 
-std::filesystem::path fresh_directory(const std::string& name) {
-  const auto directory =
-      std::filesystem::temp_directory_path() / "tendril_constrained_baselines" / name;
-  std::filesystem::remove_all(directory);
-  return directory;
-}
-
 SafetyEvaluation evaluate(const std::filesystem::path& run) {
   return evaluate_safety_run(run, 0.0, 100, 0).unfiltered;
 }
 
-SafetyEvaluation train_plain(const std::string& name, const std::string& extra_env_params) {
-  const auto run = fresh_directory(name);
+SafetyEvaluation train_plain(const std::filesystem::path& run, const std::string& extra_env_params) {
   rl::TrainOptions quiet;
   quiet.quiet = true;
   rl::train(rl::Experiment::from_config(Config::parse(task_config(extra_env_params))), run, quiet);
@@ -57,9 +50,8 @@ struct ConstrainedOutcome {
   SafetyEvaluation evaluation;
 };
 
-ConstrainedOutcome train_with_constraint(const std::string& method,
+ConstrainedOutcome train_with_constraint(const std::filesystem::path& run, const std::string& method,
                                          const std::string& multiplier) {
-  const auto run = fresh_directory(method);
   const Config config = Config::parse(task_config("") + constrained_section(method, multiplier));
   ConstrainedOutcome outcome;
   outcome.trained = train_constrained(ConstrainedExperiment::from_config(config), run, true);
@@ -78,20 +70,25 @@ double standing_still_return() {
       .mean_return;
 }
 
-TEST(ConstrainedBaselines, LearnToStayOutOfTheUnsafeSetWhereTheTaskLeadsIntoIt) {
+class ConstrainedBaselines : public testing::ScratchDirectoryTest {
+ protected:
+  ConstrainedBaselines() : ScratchDirectoryTest("constrained_baselines") {}
+};
+
+TEST_F(ConstrainedBaselines, LearnToStayOutOfTheUnsafeSetWhereTheTaskLeadsIntoIt) {
   const double still = standing_still_return();
 
-  const SafetyEvaluation unconstrained = train_plain("unconstrained", "");
+  const SafetyEvaluation unconstrained = train_plain(directory_ / "unconstrained", "");
   EXPECT_LE(unconstrained.safety_rate, 0.05);
   EXPECT_GT(unconstrained.mean_return, still + 40.0);
 
   // Reward penalty: −10 per step in X_unsafe.
-  const SafetyEvaluation penalty = train_plain("penalty", ", unsafe_penalty: 10.0");
+  const SafetyEvaluation penalty = train_plain(directory_ / "penalty", ", unsafe_penalty: 10.0");
   EXPECT_GE(penalty.safety_rate, 0.95);
   EXPECT_GT(penalty.mean_return, still + 30.0);
 
   // RSPO: the multiplier annealed from 100 to 20 over the budget.
-  const ConstrainedOutcome rspo = train_with_constraint("rspo", "{start: 100.0, end: 20.0}");
+  const ConstrainedOutcome rspo = train_with_constraint(directory_ / "rspo", "rspo", "{start: 100.0, end: 20.0}");
   EXPECT_DOUBLE_EQ(rspo.trained.final_multiplier, 20.0);
   EXPECT_GE(rspo.evaluation.safety_rate, 0.95);
   EXPECT_GT(rspo.evaluation.mean_return, still + 30.0);
@@ -99,7 +96,8 @@ TEST(ConstrainedBaselines, LearnToStayOutOfTheUnsafeSetWhereTheTaskLeadsIntoIt) 
   // Lagrangian relaxation: ν rises by dual ascent while the policy's risk on the replayed states
   // exceeds the cost limit, and the policy it shapes stays safe.
   const ConstrainedOutcome lagrangian =
-      train_with_constraint("lagrangian", "{initial: 10.0, learning_rate: 1.0e-3}");
+      train_with_constraint(directory_ / "lagrangian", "lagrangian",
+                            "{initial: 10.0, learning_rate: 1.0e-3}");
   EXPECT_GT(lagrangian.trained.final_multiplier, 100.0);
   EXPECT_GE(lagrangian.evaluation.safety_rate, 0.95);
   EXPECT_GT(lagrangian.evaluation.mean_return, still);
