@@ -11,11 +11,10 @@
 #ifdef TENDRIL_WITH_DYNAMICS
 #include "tendril/dynamics/env_model_loader.hpp"
 #endif
+#include "support/error_message.hpp"
 #include "tendril/rl/experiment.hpp"
 #include "tendril/rl/sweep.hpp"
-#include "tendril/safety/constrained_experiment.hpp"
-#include "tendril/safety/safety_experiment.hpp"
-#include "support/error_message.hpp"
+#include "tendril/safety/safety_evaluation.hpp"
 
 // Every training experiment and sweep file under configs/ reads: each key is known and valid,
 // and the environment builds (rl::Experiment builds it once). A file that starts from the
@@ -54,18 +53,6 @@ std::vector<std::string> missing_inputs(const std::filesystem::path& file) {
   return missing;
 }
 
-// Reads a training experiment as its command would: `tendril safety train` for a file with a
-// safety or constrained section, `tendril train` otherwise.
-void read_experiment(const Config& config) {
-  if (config.has("safety")) {
-    safety::SafetyExperiment::from_config(config);
-  } else if (config.has("constrained")) {
-    safety::ConstrainedExperiment::from_config(config);
-  } else {
-    rl::Experiment::from_config(config);
-  }
-}
-
 // Runs `read` and checks its outcome: success, or, for a file that lacks one of its inputs, an
 // Error naming a missing input.
 void expect_reads(const std::filesystem::path& file, const std::function<void()>& read) {
@@ -100,7 +87,7 @@ TEST_F(InRepositoryRoot, EveryShippedTrainingExperimentReads) {
     if (!config.has("algorithm") || config.has("grid")) continue;
     ++experiments;
     SCOPED_TRACE(file.string());
-    expect_reads(file, [&] { read_experiment(config); });
+    expect_reads(file, [&] { safety::task_experiment_of_config(config); });
   }
   EXPECT_GE(experiments, 60);  // the glob found configs/'s experiments
 }
@@ -116,7 +103,8 @@ TEST_F(InRepositoryRoot, EveryRunOfEveryShippedSweepReads) {
     EXPECT_FALSE(runs.empty());
     for (const auto& run : runs) {
       SCOPED_TRACE(run.name);
-      expect_reads(sweep.experiment_file, [&] { read_experiment(sweep.experiment(run)); });
+      expect_reads(sweep.experiment_file,
+                   [&] { safety::task_experiment_of_config(sweep.experiment(run)); });
     }
   }
   EXPECT_GE(sweeps, 40);

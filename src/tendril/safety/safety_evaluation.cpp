@@ -53,13 +53,18 @@ SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const T
   return result;
 }
 
+rl::Experiment task_experiment_of_config(const Config& config) {
+  if (config.has("safety")) return SafetyExperiment::from_config(config).task;
+  if (config.has("constrained")) return ConstrainedExperiment::from_config(config).task;
+  return rl::Experiment::from_config(config);
+}
+
 rl::Experiment task_experiment_of_run(const std::filesystem::path& run_directory) {
   const std::filesystem::path file = run_directory / "config.yaml";
   require(std::filesystem::exists(file), "not a run directory (no config.yaml)",
           run_directory.string());
   const Config config = Config::load_file(file);
-  if (config.has("safety")) return SafetyExperiment::from_config(config).task;
-  if (config.has("constrained")) return ConstrainedExperiment::from_config(config).task;
+  if (config.has("safety") || config.has("constrained")) return task_experiment_of_config(config);
   return rl::load_run_experiment(run_directory);
 }
 

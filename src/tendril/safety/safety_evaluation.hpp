@@ -28,9 +28,13 @@ SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const T
                                  int episodes, uint64_t seed,
                                  std::vector<std::vector<double>>* trajectory = nullptr);
 
-// The experiment a safety run was trained with, from its config.yaml: a co-training run
-// (`safety:` section, SafetyExperiment), a constrained baseline (`constrained:`,
-// ConstrainedExperiment) or a run of `tendril train`.
+// The task experiment of a training config, read as its command reads it: a co-training
+// experiment (`safety:` section, SafetyExperiment) or a constrained baseline (`constrained:`,
+// ConstrainedExperiment) for `tendril safety train`, an experiment of `tendril train` otherwise.
+rl::Experiment task_experiment_of_config(const Config& config);
+
+// The task experiment a run was trained with, from its config.yaml (a run of `tendril train` has
+// its checksum checked).
 rl::Experiment task_experiment_of_run(const std::filesystem::path& run_directory);
 
 // Who acts in an evaluation of a run: its own task policy, the policy of another run on the
