@@ -3,11 +3,11 @@
 #include <filesystem>
 #include <string>
 
+#include "support/scratch_directory.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/safety/constrained_experiment.hpp"
 #include "tendril/safety/safety_evaluation.hpp"
-#include "support/scratch_directory.hpp"
 
 // Table 6.1's baselines (seed 001 §6.4) learn on a small case where the task conflicts with
 // safety: the double integrator with its goal moved to x = 2.5 m, beyond the safe 2 m, so the
@@ -38,7 +38,8 @@ SafetyEvaluation evaluate(const std::filesystem::path& run) {
   return evaluate_safety_run(run, 0.0, 100, 0).unfiltered;
 }
 
-SafetyEvaluation train_plain(const std::filesystem::path& run, const std::string& extra_env_params) {
+SafetyEvaluation train_plain(const std::filesystem::path& run,
+                             const std::string& extra_env_params) {
   rl::TrainOptions quiet;
   quiet.quiet = true;
   rl::train(rl::Experiment::from_config(Config::parse(task_config(extra_env_params))), run, quiet);
@@ -50,8 +51,8 @@ struct ConstrainedOutcome {
   SafetyEvaluation evaluation;
 };
 
-ConstrainedOutcome train_with_constraint(const std::filesystem::path& run, const std::string& method,
-                                         const std::string& multiplier) {
+ConstrainedOutcome train_with_constraint(const std::filesystem::path& run,
+                                         const std::string& method, const std::string& multiplier) {
   const Config config = Config::parse(task_config("") + constrained_section(method, multiplier));
   ConstrainedOutcome outcome;
   outcome.trained = train_constrained(ConstrainedExperiment::from_config(config), run, true);
@@ -62,8 +63,7 @@ ConstrainedOutcome train_with_constraint(const std::filesystem::path& run, const
 // The return of standing still from the same 100 starts: what a policy that learned nothing but
 // safety would get.
 double standing_still_return() {
-  auto env = envs::make("Safety/DoubleIntegrator-v0",
-                        Config::parse(std::string(kEnvParams) + "}"));
+  auto env = envs::make("Safety/DoubleIntegrator-v0", Config::parse(std::string(kEnvParams) + "}"));
   return evaluate_safety(
              *env, *constraint_of(*env),
              [](const Observation&) { return Action::Constant(1, 0.0f); }, 100, 0)
@@ -88,16 +88,16 @@ TEST_F(ConstrainedBaselines, LearnToStayOutOfTheUnsafeSetWhereTheTaskLeadsIntoIt
   EXPECT_GT(penalty.mean_return, still + 30.0);
 
   // RSPO: the multiplier annealed from 100 to 20 over the budget.
-  const ConstrainedOutcome rspo = train_with_constraint(directory_ / "rspo", "rspo", "{start: 100.0, end: 20.0}");
+  const ConstrainedOutcome rspo =
+      train_with_constraint(directory_ / "rspo", "rspo", "{start: 100.0, end: 20.0}");
   EXPECT_DOUBLE_EQ(rspo.trained.final_multiplier, 20.0);
   EXPECT_GE(rspo.evaluation.safety_rate, 0.95);
   EXPECT_GT(rspo.evaluation.mean_return, still + 30.0);
 
   // Lagrangian relaxation: ν rises by dual ascent while the policy's risk on the replayed states
   // exceeds the cost limit, and the policy it shapes stays safe.
-  const ConstrainedOutcome lagrangian =
-      train_with_constraint(directory_ / "lagrangian", "lagrangian",
-                            "{initial: 10.0, learning_rate: 1.0e-3}");
+  const ConstrainedOutcome lagrangian = train_with_constraint(
+      directory_ / "lagrangian", "lagrangian", "{initial: 10.0, learning_rate: 1.0e-3}");
   EXPECT_GT(lagrangian.trained.final_multiplier, 100.0);
   EXPECT_GE(lagrangian.evaluation.safety_rate, 0.95);
   EXPECT_GT(lagrangian.evaluation.mean_return, still);
