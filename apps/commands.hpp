@@ -12,6 +12,7 @@ int collect_command(const std::vector<std::string>& args);
 int train_command(const std::vector<std::string>& args);
 int eval_command(const std::vector<std::string>& args);
 int sweep_command(const std::vector<std::string>& args);
+int summarize_command(const std::vector<std::string>& args);
 int pneumatic_collect_command(const std::vector<std::string>& args);
 int pneumatic_replay_command(const std::vector<std::string>& args);
 int pneumatic_prepare_command(const std::vector<std::string>& args);

@@ -53,6 +53,10 @@ commands:
   sweep <sweep.yaml> --slurm [--tasks K] [--max-running M] [--time T] [--cpus-per-task C]
         [--mem M] [--partition P] [--account A] [--job-name N] [--stop-before S] [--out FILE]
       Write a Slurm job-array script (<output>/slurm/sweep.sbatch) whose tasks share the runs.
+  summarize <run-dir|dir of runs> ... [--at STEPS,STEPS...]
+      A Markdown table of runs outside a sweep: training mean at each step of --at and at the
+      end, final evaluation, training time; per run and as mean ± std over runs whose names
+      differ only by seed (docs/sweeps.md).
   collect-pneumatic <collect.yaml> [--set key=value ...] [--out FILE]
       Record the pneumatic arm's data set (seed 002: 10 min at 10 Hz under a dynamically
       saturating pressure signal) from PneumaticArm/Robot-v0 into a CSV file.
@@ -144,6 +148,7 @@ int main(int argc, char** argv) {
     if (args[0] == "train") return tendril::apps::train_command(rest);
     if (args[0] == "eval") return tendril::apps::eval_command(rest);
     if (args[0] == "sweep") return tendril::apps::sweep_command(rest);
+    if (args[0] == "summarize") return tendril::apps::summarize_command(rest);
     if (args[0] == "record") return tendril::apps::record_command(rest);
     if (args[0] == "rollout") return tendril::apps::rollout_command(rest);
 #endif

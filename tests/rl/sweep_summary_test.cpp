@@ -5,9 +5,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
+#include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
+#include "tendril/rl/runs_report.hpp"
 #include "tendril/rl/sweep.hpp"
 
 namespace tendril::rl {
@@ -187,6 +192,76 @@ TEST_F(SweepSummaries, ConfigurationsAreMeansAndSpreadsOverSeeds) {
       read(directory_ / "out" / "summary" / "curves" / "n_steps_64.train.csv");
   EXPECT_EQ(curve.substr(0, curve.find('\n')), "steps,mean,std,min,max,seeds");
   EXPECT_NE(curve.find("\n1000,2000,816.496580"), std::string::npos) << curve.substr(0, 300);
+}
+
+// Runs outside a sweep: a_seed0, a_seed1 (finals 2 and 4; training means y = step / 100 and
+// y = 3 step / 100 at steps 100..1000) and b_seed0 (final 10, trained to 500 steps, unfinished).
+TEST_F(SweepSummaries, RunsOutsideASweepGroupBySeedTokenAndReport) {
+  const std::string header =
+      "time/total_timesteps,time/fps,time/time_elapsed,rollout/ep_rew_mean\n";
+  const struct {
+    const char* name;
+    double slope, final_eval;
+    int last;
+    bool finished;
+  } runs[] = {
+      {"a_seed0", 1, 2, 1000, true}, {"a_seed1", 3, 4, 1000, true}, {"b_seed0", 5, 10, 500, false}};
+  for (const auto& r : runs) {
+    std::ostringstream progress;
+    progress << header;
+    for (int step = 100; step <= r.last; step += 100) {
+      progress << step << ",100," << step / 100.0 << "," << r.slope * step / 100.0 << "\n";
+    }
+    write_run(r.name, progress.str(),
+              std::to_string(r.last) + "," + std::to_string(r.final_eval) + ",0.5,10,2\n",
+              r.finished);
+  }
+  const fs::path out = directory_ / "out";
+  // A directory of runs adds them in name order; a run named directly is taken as it is.
+  const std::vector<fs::path> found = run_directories({out, out / "a_seed1"});
+  EXPECT_EQ(found, (std::vector<fs::path>{out / "a_seed0", out / "a_seed1", out / "b_seed0",
+                                          out / "a_seed1"}));
+  EXPECT_EQ(testing::error_message([&] { run_directories({directory_}); }),
+            directory_.string() + ": holds no run (a directory with a progress.csv)");
+  EXPECT_EQ(testing::error_message([&] { run_directories({out / "missing"}); }),
+            (out / "missing").string() + ": is not a directory");
+
+  const SweepSummary summary = summarize_runs(run_directories({out}));
+  ASSERT_EQ(summary.configurations.size(), 2u);
+  EXPECT_EQ(summary.configurations[0].name, "a");
+  EXPECT_EQ(summary.configurations[0].runs, (std::vector<int>{0, 1}));
+  EXPECT_DOUBLE_EQ(summary.configurations[0].final_eval.mean, 3.0);
+  EXPECT_DOUBLE_EQ(summary.configurations[0].final_eval.std, 1.0);
+  EXPECT_EQ(summary.configurations[1].name, "b");
+  EXPECT_EQ(summary.configurations[1].final_eval.count, 0);  // unfinished
+  EXPECT_DOUBLE_EQ(summary.run_seconds, 10 + 10 + 5);
+  EXPECT_TRUE(std::isnan(summary.wall_seconds));
+
+  // The last row at or before the step; none before the first row or past the run's steps.
+  const RunSummary& a1 = summary.runs[1];
+  EXPECT_EQ(training_mean_at(a1, 250), std::optional<double>(6.0));
+  EXPECT_EQ(training_mean_at(a1, 300), std::optional<double>(9.0));
+  EXPECT_EQ(training_mean_at(a1, 1000), std::optional<double>(30.0));
+  EXPECT_EQ(training_mean_at(a1, 99), std::nullopt);
+  EXPECT_EQ(training_mean_at(summary.runs[2], 600), std::nullopt);
+
+  // At 600: a's runs 6 and 18 (mean 12, std 6); b has not reached it. At the end: 10 and 30,
+  // and b's 25. Final evaluations 2 and 4 (3 ± 1); b unfinished has none.
+  const std::string report = runs_report(summary, {600});
+  EXPECT_NE(report.find("| configuration | training mean at 600 | training mean at the end | "
+                        "final evaluation | runs | training time (s) |"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("| a | 12.00 ± 6.00 | 20.00 ± 10.00 | 3.00 ± 1.00 | 2 | 20.0 |"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("| b | – | 25.00 ± 0.00 | – | 1 | 5.0 |"), std::string::npos) << report;
+  EXPECT_NE(report.find("| a_seed1 | 18.00 | 30.00 | 4.00 ± 0.50 at 1000 | 1000 | 10.0 | 100 |"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("| b_seed0 | – | 25.00 | – | 500 | 5.0 | 100 |"), std::string::npos)
+      << report;
+  EXPECT_NE(report.find("3 runs (2 finished) in 2 configurations"), std::string::npos);
 }
 
 }  // namespace

@@ -208,24 +208,26 @@ RunSummary summarize_run(const fs::path& directory) {
   return run;
 }
 
-SweepSummary summarize_sweep(const Sweep& sweep) {
-  SweepSummary summary;
-  const std::vector<Sweep::Run> runs = sweep.runs();
-  std::map<std::string, std::size_t> index_of;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    summary.runs.push_back(summarize_run(sweep.directory(runs[i])));
-    const std::string group = seed_group(runs[i].name, sweep_name(sweep));
-    auto [at, inserted] = index_of.emplace(group, summary.configurations.size());
-    if (inserted) {
-      ConfigurationSummary configuration;
-      configuration.name = group;
-      for (const auto& [key, value] : runs[i].overrides) {
-        if (!is_seed_key(key)) configuration.settings.emplace_back(key, value);
-      }
-      summary.configurations.push_back(configuration);
-    }
-    summary.configurations[at->second].runs.push_back(static_cast<int>(i));
+namespace {
+
+// Adds run `i` of `summary` to the configuration named `group` (a new one, with `settings`, on
+// its first run).
+void add_to_configuration(SweepSummary& summary, std::size_t i, const std::string& group,
+                          const std::vector<std::pair<std::string, std::string>>& settings) {
+  auto found = std::find_if(summary.configurations.begin(), summary.configurations.end(),
+                            [&](const ConfigurationSummary& c) { return c.name == group; });
+  if (found == summary.configurations.end()) {
+    ConfigurationSummary configuration;
+    configuration.name = group;
+    configuration.settings = settings;
+    summary.configurations.push_back(configuration);
+    found = summary.configurations.end() - 1;
   }
+  found->runs.push_back(static_cast<int>(i));
+}
+
+// Each configuration's spreads and curves over its runs, and the training time of them all.
+void aggregate_configurations(SweepSummary& summary) {
   for (ConfigurationSummary& configuration : summary.configurations) {
     std::vector<double> finals, speeds;
     std::vector<Curve> train, eval;
@@ -242,6 +244,26 @@ SweepSummary summarize_sweep(const Sweep& sweep) {
     configuration.eval = aggregate_curves(eval);
   }
   for (const RunSummary& run : summary.runs) summary.run_seconds += run.seconds;
+}
+
+std::string parent_name(const fs::path& run) {
+  return fs::absolute(run).lexically_normal().parent_path().filename().string();
+}
+
+}  // namespace
+
+SweepSummary summarize_sweep(const Sweep& sweep) {
+  SweepSummary summary;
+  const std::vector<Sweep::Run> runs = sweep.runs();
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    summary.runs.push_back(summarize_run(sweep.directory(runs[i])));
+    std::vector<std::pair<std::string, std::string>> settings;
+    for (const auto& [key, value] : runs[i].overrides) {
+      if (!is_seed_key(key)) settings.emplace_back(key, value);
+    }
+    add_to_configuration(summary, i, seed_group(runs[i].name, sweep_name(sweep)), settings);
+  }
+  aggregate_configurations(summary);
   const auto log = read_columns(fs::path(sweep.output) / "sweep_log.csv");
   const auto& times = column(log, "unix_time");
   summary.wall_seconds = kNaN;
@@ -252,6 +274,45 @@ SweepSummary summarize_sweep(const Sweep& sweep) {
   std::ifstream in(fs::path(sweep.output) / "sweep_log.csv");
   for (std::string line; std::getline(in, line);) summary.processes += line.rfind("start,", 0) == 0;
   return summary;
+}
+
+std::vector<fs::path> run_directories(const std::vector<fs::path>& paths) {
+  std::vector<fs::path> runs;
+  for (const fs::path& path : paths) {
+    require(fs::is_directory(path), "is not a directory", path.string());
+    if (fs::exists(path / "progress.csv")) {
+      runs.push_back(path);
+      continue;
+    }
+    std::vector<fs::path> inside;
+    for (const auto& entry : fs::directory_iterator(path)) {
+      if (entry.is_directory() && fs::exists(entry.path() / "progress.csv")) {
+        inside.push_back(entry.path());
+      }
+    }
+    require(!inside.empty(), "holds no run (a directory with a progress.csv)", path.string());
+    std::sort(inside.begin(), inside.end());
+    runs.insert(runs.end(), inside.begin(), inside.end());
+  }
+  return runs;
+}
+
+SweepSummary summarize_runs(const std::vector<fs::path>& runs) {
+  SweepSummary summary;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    summary.runs.push_back(summarize_run(runs[i]));
+    add_to_configuration(summary, i, seed_group(summary.runs[i].name, parent_name(runs[i])), {});
+  }
+  aggregate_configurations(summary);
+  summary.wall_seconds = kNaN;
+  return summary;
+}
+
+std::optional<double> training_mean_at(const RunSummary& run, double step) {
+  if (static_cast<double>(run.steps) < step) return std::nullopt;
+  const auto after = std::upper_bound(run.train.x.begin(), run.train.x.end(), step);
+  if (after == run.train.x.begin()) return std::nullopt;
+  return run.train.y[static_cast<std::size_t>(after - run.train.x.begin()) - 1];
 }
 
 namespace {

@@ -80,6 +80,18 @@ struct SweepSummary {
 };
 SweepSummary summarize_sweep(const Sweep& sweep);
 
+// The runs among `paths`: a directory holding a progress.csv is a run; any other directory adds
+// the runs directly inside it, in name order. An Error names a path that is not a directory or
+// holds no run.
+std::vector<std::filesystem::path> run_directories(const std::vector<std::filesystem::path>& paths);
+// Runs outside a sweep (each a run directory), grouped into configurations by seed_group of their
+// names (the parent directory's name for a name that is only a seed), in order of first
+// appearance: no settings, no sweep_log.csv (wall time NaN).
+SweepSummary summarize_runs(const std::vector<std::filesystem::path>& runs);
+// The training mean (rollout/ep_rew_mean) of the run's last progress.csv row at or before
+// `step`; none when the run has not trained `step` steps or has no such row.
+std::optional<double> training_mean_at(const RunSummary& run, double step);
+
 // Writes <directory>/configurations.csv, runs.csv, curves/<configuration>.{train,eval}.csv and
 // summary.md (each atomically). `figures` are PNG files in `directory` the page links to.
 void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary,
