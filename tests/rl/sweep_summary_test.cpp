@@ -147,9 +147,12 @@ TEST_F(SweepSummaries, ConfigurationsAreMeansAndSpreadsOverSeeds) {
     eval << "500,0,0,10,2\n" << last << "," << finals[i] << ",1,10,2\n";
     write_run(runs[i].name, progress.str(), eval.str(), i != 5);
   }
+  // Two ranks from 1000.5 to 1130.5; after an idle gap one process for 10 s, then one killed
+  // (no end): wall time 1999.5 s from first to last event, busy 130 + 10 s.
   std::ofstream(directory_ / "out" / "sweep_log.csv")
       << "event,unix_time,host,pid,rank,ranks\nstart,1000.5,a,1,0,2\nstart,1001,b,2,1,2\n"
-         "end,1100,b,2,1,2\nend,1130.5,a,1,0,2\n";
+         "end,1100,b,2,1,2\nend,1130.5,a,1,0,2\nstart,2000,a,7,0,1\nend,2010,a,7,0,1\n"
+         "start,3000,a,8,0,1\n";
 
   const SweepSummary summary = summarize_sweep(s);
   ASSERT_EQ(summary.configurations.size(), 2u);
@@ -172,8 +175,10 @@ TEST_F(SweepSummaries, ConfigurationsAreMeansAndSpreadsOverSeeds) {
   EXPECT_DOUBLE_EQ(b.train.x.back(), 500.0);
   EXPECT_NEAR(b.train.mean.back(), 2500.0, 1e-9);
   EXPECT_EQ(b.train.curves, 3);
-  EXPECT_DOUBLE_EQ(summary.wall_seconds, 130.0);
-  EXPECT_EQ(summary.processes, 2);
+  EXPECT_DOUBLE_EQ(summary.wall_seconds, 1999.5);
+  EXPECT_DOUBLE_EQ(summary.busy_seconds, 140.0);
+  EXPECT_EQ(summary.processes, 4);
+  EXPECT_EQ(summary.ended_processes, 3);
 
   write_sweep_summary(s, summary, directory_ / "out" / "summary", {{"training.png", "curves"}});
   const std::string table = read(directory_ / "out" / "summary" / "configurations.csv");
@@ -186,7 +191,11 @@ TEST_F(SweepSummaries, ConfigurationsAreMeansAndSpreadsOverSeeds) {
       << page;
   EXPECT_NE(page.find("| n_steps_128 | 128 | 2 / 3 | 15.00 ± 5.00 | 10.00 | 20.00 |"),
             std::string::npos);
-  EXPECT_NE(page.find("Wall time: 130.0 s"), std::string::npos);
+  EXPECT_NE(page.find("Wall time: 1999.5 s"), std::string::npos);
+  EXPECT_NE(page.find("Busy wall time: 140.0 s (0.04 h), while at least one process ran (the 3 "
+                      "process(es) that logged their end)"),
+            std::string::npos)
+      << page;
   EXPECT_NE(page.find("![curves](training.png)"), std::string::npos);
   const std::string curve =
       read(directory_ / "out" / "summary" / "curves" / "n_steps_64.train.csv");

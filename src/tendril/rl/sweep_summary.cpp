@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <numeric>
@@ -271,8 +272,32 @@ SweepSummary summarize_sweep(const Sweep& sweep) {
     summary.wall_seconds = *std::max_element(times.begin(), times.end()) -
                            *std::min_element(times.begin(), times.end());
   }
+  // Each start pairs with the next end of the same host and PID.
   std::ifstream in(fs::path(sweep.output) / "sweep_log.csv");
-  for (std::string line; std::getline(in, line);) summary.processes += line.rfind("start,", 0) == 0;
+  std::map<std::string, double> started;
+  std::vector<std::pair<double, double>> intervals;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (cells.size() < 4 || (cells[0] != "start" && cells[0] != "end")) continue;
+    const double time = std::strtod(cells[1].c_str(), nullptr);
+    const std::string process = cells[2] + "," + cells[3];
+    if (cells[0] == "start") {
+      ++summary.processes;
+      started[process] = time;
+    } else if (const auto start = started.find(process); start != started.end()) {
+      ++summary.ended_processes;
+      intervals.emplace_back(start->second, time);
+      started.erase(start);
+    }
+  }
+  std::sort(intervals.begin(), intervals.end());
+  double covered_to = -std::numeric_limits<double>::infinity();
+  for (const auto& [start, end] : intervals) {
+    summary.busy_seconds += std::max(0.0, end - std::max(start, covered_to));
+    covered_to = std::max(covered_to, end);
+  }
   return summary;
 }
 
@@ -433,6 +458,9 @@ void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary, const 
   page += "- Wall time: " + duration(summary.wall_seconds) + ", from the first start to the " +
           "last end of the " + std::to_string(summary.processes) +
           " process(es) in sweep_log.csv (idle time between invocations included).\n";
+  page += "- Busy wall time: " + duration(summary.busy_seconds) +
+          ", while at least one process ran (the " + std::to_string(summary.ended_processes) +
+          " process(es) that logged their end).\n";
   page += "- Training time summed over runs: " + duration(summary.run_seconds) + ".\n\n";
   page +=
       "## Final evaluation\n\nThe last row of each finished run's eval.csv (its evaluation "

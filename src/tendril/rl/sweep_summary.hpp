@@ -73,9 +73,13 @@ struct SweepSummary {
   std::vector<RunSummary> runs;                      // in the sweep's order
   std::vector<ConfigurationSummary> configurations;  // in order of first appearance
   // From sweep_log.csv: the first process's start to the last one's end (NaN without a log),
-  // the processes that logged a start, and the training time summed over runs.
+  // the time at least one process ran (the union of the start-to-end intervals of the processes
+  // that logged both; a killed process logs no end), the processes that logged a start and those
+  // that logged an end, and the training time summed over runs.
   double wall_seconds = 0.0;
+  double busy_seconds = 0.0;
   int processes = 0;
+  int ended_processes = 0;
   double run_seconds = 0.0;
 };
 SweepSummary summarize_sweep(const Sweep& sweep);
