@@ -77,8 +77,9 @@ std::string runs_report(const SweepSummary& summary, const std::vector<double>& 
     double seconds = 0.0;
     for (const int i : c.runs) {
       const RunSummary& run = summary.runs[i];
-      for (std::size_t k = 0; k < steps.size(); ++k)
+      for (std::size_t k = 0; k < steps.size(); ++k) {
         at[k].push_back(training_mean_at(run, steps[k]));
+      }
       at_end.push_back(training_mean_at_end(run));
       finals.push_back(final_evaluation(run));
       seconds += run.seconds;
