@@ -1,5 +1,6 @@
 // `tendril summarize`: the numbers of runs outside a sweep — training means at given steps,
 // final evaluations, training time — per run and as mean ± std over seeds.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>

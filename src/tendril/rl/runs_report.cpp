@@ -14,20 +14,23 @@ std::string fixed(double value, const char* format = "%.2f") {
   return text;
 }
 
-// "mean ± std" of the values present, "(k of n runs)" added when some runs have none.
-std::string spread_cell(const std::vector<std::optional<double>>& values) {
+// "mean ± std" of a spread over `runs` runs, "(k of n runs)" added when some runs gave no value.
+std::string spread_cell(const Spread& s, std::size_t runs) {
+  if (s.count == 0) return "–";
+  std::string cell = fixed(s.mean) + " ± " + fixed(s.std);
+  if (static_cast<std::size_t>(s.count) < runs) {
+    cell += " (" + std::to_string(s.count) + " of " + std::to_string(runs) + " runs)";
+  }
+  return cell;
+}
+
+// The spread of the values present.
+Spread spread_of_present(const std::vector<std::optional<double>>& values) {
   std::vector<double> present;
   for (const auto& value : values) {
     if (value) present.push_back(*value);
   }
-  if (present.empty()) return "–";
-  const Spread s = spread_of(present);
-  std::string cell = fixed(s.mean) + " ± " + fixed(s.std);
-  if (present.size() < values.size()) {
-    cell +=
-        " (" + std::to_string(present.size()) + " of " + std::to_string(values.size()) + " runs)";
-  }
-  return cell;
+  return spread_of(present);
 }
 
 std::string value_cell(const std::optional<double>& value) { return value ? fixed(*value) : "–"; }
@@ -35,11 +38,6 @@ std::string value_cell(const std::optional<double>& value) { return value ? fixe
 std::optional<double> training_mean_at_end(const RunSummary& run) {
   if (run.train.y.empty()) return std::nullopt;
   return run.train.y.back();
-}
-
-std::optional<double> final_evaluation(const RunSummary& run) {
-  if (!run.finished) return std::nullopt;
-  return run.final_eval_mean;
 }
 
 std::string header(const std::string& first, const std::vector<double>& steps,
@@ -72,7 +70,7 @@ std::string runs_report(const SweepSummary& summary, const std::vector<double>& 
       "population standard deviation over their runs.\n\n## Configurations\n\n";
   page += header("configuration", steps, {"final evaluation", "runs", "training time (s)"});
   for (const ConfigurationSummary& c : summary.configurations) {
-    std::vector<std::optional<double>> at_end, finals;
+    std::vector<std::optional<double>> at_end;
     std::vector<std::vector<std::optional<double>>> at(steps.size());
     double seconds = 0.0;
     for (const int i : c.runs) {
@@ -81,13 +79,14 @@ std::string runs_report(const SweepSummary& summary, const std::vector<double>& 
         at[k].push_back(training_mean_at(run, steps[k]));
       }
       at_end.push_back(training_mean_at_end(run));
-      finals.push_back(final_evaluation(run));
       seconds += run.seconds;
     }
+    const std::size_t runs = c.runs.size();
     page += "| " + c.name + " |";
-    for (const auto& values : at) page += " " + spread_cell(values) + " |";
-    page += " " + spread_cell(at_end) + " | " + spread_cell(finals) + " | " +
-            std::to_string(c.runs.size()) + " | " + fixed(seconds, "%.1f") + " |\n";
+    for (const auto& values : at) page += " " + spread_cell(spread_of_present(values), runs) + " |";
+    page += " " + spread_cell(spread_of_present(at_end), runs) + " | " +
+            spread_cell(c.final_eval, runs) + " | " + std::to_string(runs) + " | " +
+            fixed(seconds, "%.1f") + " |\n";
   }
   page += "\n## Runs\n\n";
   page += header(
@@ -96,7 +95,7 @@ std::string runs_report(const SweepSummary& summary, const std::vector<double>& 
   for (const RunSummary& run : summary.runs) {
     page += "| " + run.name + " |";
     for (const double step : steps) page += " " + value_cell(training_mean_at(run, step)) + " |";
-    const std::string final_eval = final_evaluation(run)
+    const std::string final_eval = run.finished && run.final_eval_mean
                                        ? fixed(*run.final_eval_mean) + " ± " +
                                              fixed(run.final_eval_std.value_or(NAN)) + " at " +
                                              std::to_string(run.final_eval_steps)

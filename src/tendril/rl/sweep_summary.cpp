@@ -247,6 +247,40 @@ void aggregate_configurations(SweepSummary& summary) {
   for (const RunSummary& run : summary.runs) summary.run_seconds += run.seconds;
 }
 
+// The wall time, busy time and process counts of sweep_log.csv (one `start` and one `end` row per
+// process: event,unix_time,host,pid,...); each start pairs with the next end of its host and PID.
+void read_sweep_log(const fs::path& file, SweepSummary& summary) {
+  std::ifstream in(file);
+  std::map<std::string, double> started;
+  std::vector<std::pair<double, double>> intervals;
+  double first = kNaN, last = kNaN;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells;
+    std::stringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (cells.size() < 4 || (cells[0] != "start" && cells[0] != "end")) continue;
+    const double time = std::strtod(cells[1].c_str(), nullptr);
+    first = std::fmin(first, time);
+    last = std::fmax(last, time);
+    const std::string process = cells[2] + "," + cells[3];
+    if (cells[0] == "start") {
+      ++summary.processes;
+      started[process] = time;
+    } else if (const auto start = started.find(process); start != started.end()) {
+      ++summary.ended_processes;
+      intervals.emplace_back(start->second, time);
+      started.erase(start);
+    }
+  }
+  summary.wall_seconds = last - first;  // NaN without events
+  std::sort(intervals.begin(), intervals.end());
+  double covered_to = -std::numeric_limits<double>::infinity();
+  for (const auto& [start, end] : intervals) {
+    summary.busy_seconds += std::max(0.0, end - std::max(start, covered_to));
+    covered_to = std::max(covered_to, end);
+  }
+}
+
 std::string parent_name(const fs::path& run) {
   return fs::absolute(run).lexically_normal().parent_path().filename().string();
 }
@@ -265,39 +299,7 @@ SweepSummary summarize_sweep(const Sweep& sweep) {
     add_to_configuration(summary, i, seed_group(runs[i].name, sweep_name(sweep)), settings);
   }
   aggregate_configurations(summary);
-  const auto log = read_columns(fs::path(sweep.output) / "sweep_log.csv");
-  const auto& times = column(log, "unix_time");
-  summary.wall_seconds = kNaN;
-  if (!times.empty()) {
-    summary.wall_seconds = *std::max_element(times.begin(), times.end()) -
-                           *std::min_element(times.begin(), times.end());
-  }
-  // Each start pairs with the next end of the same host and PID.
-  std::ifstream in(fs::path(sweep.output) / "sweep_log.csv");
-  std::map<std::string, double> started;
-  std::vector<std::pair<double, double>> intervals;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    std::stringstream row(line);
-    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
-    if (cells.size() < 4 || (cells[0] != "start" && cells[0] != "end")) continue;
-    const double time = std::strtod(cells[1].c_str(), nullptr);
-    const std::string process = cells[2] + "," + cells[3];
-    if (cells[0] == "start") {
-      ++summary.processes;
-      started[process] = time;
-    } else if (const auto start = started.find(process); start != started.end()) {
-      ++summary.ended_processes;
-      intervals.emplace_back(start->second, time);
-      started.erase(start);
-    }
-  }
-  std::sort(intervals.begin(), intervals.end());
-  double covered_to = -std::numeric_limits<double>::infinity();
-  for (const auto& [start, end] : intervals) {
-    summary.busy_seconds += std::max(0.0, end - std::max(start, covered_to));
-    covered_to = std::max(covered_to, end);
-  }
+  read_sweep_log(fs::path(sweep.output) / "sweep_log.csv", summary);
   return summary;
 }
 
