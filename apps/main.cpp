@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/numerics_mode.hpp"
 #ifdef TENDRIL_WITH_RL
 #include "tendril/nn/threads.hpp"
 #endif
@@ -109,7 +110,19 @@ commands:
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A portable build runs with its numerical libraries' kernels pinned (docs/reproducibility.md).
+  try {
+    tendril::pin_portable_kernels(argv);
+  } catch (const tendril::Error& e) {
+    std::fprintf(stderr, "tendril: error: %s\n", e.what());
+    return 1;
+  }
   const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() == 1 && args[0] == "--version") {
+    std::printf("tendril %s\n%s\n", tendril::tendril_version().c_str(),
+                tendril::numerics_description().c_str());
+    return 0;
+  }
   if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
     std::fputs(kUsage, args.empty() ? stderr : stdout);
     return args.empty() ? 2 : 0;

@@ -15,6 +15,7 @@
 #include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/log.hpp"
+#include "tendril/core/numerics_mode.hpp"
 #include "tendril/core/run_lock.hpp"
 #include "tendril/rl/replay_buffer.hpp"
 #include "tendril/rl/training_observers.hpp"
@@ -135,7 +136,7 @@ class Run {
     result.finished = result.timesteps >= experiment_.n_timesteps;
     result.interrupted = result.finished ? 0 : checkpoints_->interrupted();
     if (result.finished) {
-      const EvaluationResult final_eval = evaluation_->evaluate(result.timesteps);
+      const envs::RunResult final_eval = evaluation_->evaluate(result.timesteps);
       result.final_eval_mean = final_eval.mean_return();
       result.final_eval_std = final_eval.std_return();
       algorithm_->save_policy(directory_ / "model.policy");
@@ -284,6 +285,9 @@ TrainResult train(const Experiment& experiment, const fs::path& run_directory,
   }
   remove_leftovers(run_directory);
   write_file_atomically(run_directory / "config.yaml", with_checksum(config_text), "config.yaml");
+  // Which build and CPU started the run: what decides whether a rerun is bit-identical
+  // (docs/reproducibility.md).
+  write_file_atomically(run_directory / "machine.yaml", machine_record(), "machine.yaml");
   return run(experiment, run_directory, options, std::move(lock), /*resuming=*/false);
 }
 
