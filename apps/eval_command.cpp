@@ -10,7 +10,8 @@
 #include "run_policy.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/rl/evaluation.hpp"
+#include "tendril/envs/runner/policy_runner.hpp"
+#include "tendril/rl/open_loop.hpp"
 
 namespace tendril::apps {
 
@@ -33,18 +34,17 @@ double sd_of(const std::vector<T>& values) {
 }
 
 // One row per episode: episode, return, length, then the final step's info values.
-std::string episodes_csv(const rl::EvaluationResult& result) {
+std::string episodes_csv(const envs::RunResult& result) {
   std::ostringstream csv;
   csv.precision(10);
   csv << "episode,return,length";
-  if (!result.final_infos.empty()) {
-    for (const auto& entry : result.final_infos.front().entries()) csv << "," << entry.first;
-  }
+  const Info& first = result.episodes.front().final_info;
+  for (const auto& entry : first.entries()) csv << "," << entry.first;
   csv << "\n";
-  for (std::size_t i = 0; i < result.returns.size(); ++i) {
-    csv << i << "," << result.returns[i] << "," << result.lengths[i];
-    for (const auto& entry : result.final_infos.front().entries()) {
-      csv << "," << result.final_infos[i].get(entry.first).value_or(0.0);
+  for (const envs::EpisodeOutcome& episode : result.episodes) {
+    csv << episode.index << "," << episode.episode_return << "," << episode.length;
+    for (const auto& entry : first.entries()) {
+      csv << "," << episode.final_info.get(entry.first).value_or(0.0);
     }
     csv << "\n";
   }
@@ -67,7 +67,7 @@ int eval_command(const std::vector<std::string>& args) {
   if (!out.empty())
     require(!std::filesystem::exists(out), "exists; nothing is overwritten", out.string());
   const RunPolicy policy = open_run_policy(run, line.has("best"), line.overrides);
-  rl::EvaluationResult result;
+  envs::RunResult result;
   if (line.has("open-loop")) {
     // The policy acts once in the run's own environment; its actions replay on this one.
     const RunPolicy trained = open_run_policy(run, line.has("best"));
@@ -77,7 +77,11 @@ int eval_command(const std::vector<std::string>& args) {
                 trained.experiment.env.id.c_str());
     result = rl::replay_actions(actions, *policy.env, episodes, seed);
   } else {
-    result = rl::evaluate_policy(*policy.policy, *policy.env, episodes, deterministic, seed);
+    envs::RunSettings settings;
+    settings.episodes = episodes;
+    settings.seed = seed;
+    settings.deterministic = deterministic;
+    result = envs::run_policy(*policy.policy, *policy.env, settings);
   }
   std::printf("%s on %s, %d episodes (%s): mean return %.3f +/- %.3f\n",
               policy.source.string().c_str(), policy.experiment.env.id.c_str(), episodes,
@@ -85,24 +89,26 @@ int eval_command(const std::vector<std::string>& args) {
               : deterministic       ? "deterministic"
                                     : "stochastic",
               result.mean_return(), result.std_return());
-  for (std::size_t i = 0; i < result.returns.size(); ++i) {
-    std::printf("  episode %2zu: return %10.3f  length %lld", i, result.returns[i],
-                static_cast<long long>(result.lengths[i]));
-    for (const auto& [name, value] : result.final_infos[i].entries()) {
+  for (const envs::EpisodeOutcome& episode : result.episodes) {
+    std::printf("  episode %2lld: return %10.3f  length %lld",
+                static_cast<long long>(episode.index), episode.episode_return,
+                static_cast<long long>(episode.length));
+    for (const auto& [name, value] : episode.final_info.entries()) {
       std::printf("  %s %.6g", name.c_str(), value);
     }
     std::printf("\n");
   }
   // Each info value at the episodes' ends: mean and standard deviation over the episodes (a
   // success flag's mean is the success rate).
-  if (!result.final_infos.empty()) {
-    std::printf("at the end of the episodes (mean +/- sd over %zu):\n", result.final_infos.size());
-    std::printf("  %-24s %.6g +/- %.6g\n", "length", mean_of(result.lengths),
-                sd_of(result.lengths));
-    for (const auto& entry : result.final_infos.front().entries()) {
+  if (!result.episodes.empty()) {
+    std::printf("at the end of the episodes (mean +/- sd over %zu):\n", result.episodes.size());
+    std::vector<int64_t> lengths;
+    for (const envs::EpisodeOutcome& episode : result.episodes) lengths.push_back(episode.length);
+    std::printf("  %-24s %.6g +/- %.6g\n", "length", mean_of(lengths), sd_of(lengths));
+    for (const auto& entry : result.episodes.front().final_info.entries()) {
       std::vector<double> values;
-      for (const Info& info : result.final_infos)
-        values.push_back(info.get(entry.first).value_or(0.0));
+      for (const envs::EpisodeOutcome& episode : result.episodes)
+        values.push_back(episode.final_info.get(entry.first).value_or(0.0));
       std::printf("  %-24s %.6g +/- %.6g\n", entry.first.c_str(), mean_of(values), sd_of(values));
     }
   }

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "support/error_message.hpp"
+#include "support/evaluation.hpp"
 #include "tendril/core/episode_reader.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
@@ -158,8 +158,8 @@ TEST(Trainer, SaveBestKeepsTheModelOfTheBestEvaluation) {
   const std::unique_ptr<Policy> policy = load_policy(run / "best_model.policy");
   ASSERT_TRUE(policy->observation_normalization().has_value());
   const auto evaluation_env = envs::make(e.env.id, e.env.params);
-  const EvaluationResult again = evaluate_policy(*policy, *evaluation_env, e.eval_episodes, true,
-                                                 e.seed + 1000003 + best.first);
+  const envs::RunResult again =
+      testing::evaluate(*policy, *evaluation_env, e.eval_episodes, e.seed + 1000003 + best.first);
   EXPECT_EQ(again.mean_return(), best.second);
 }
 

@@ -114,17 +114,20 @@ bool EvaluationObserver::on_iteration(const Progress& progress) {
   return true;
 }
 
-EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
-  // A stream of its own per evaluation point, so evaluating never disturbs training.
-  const uint64_t seed = experiment_.seed + 1000003 + timesteps;
-  EvaluationResult eval;
+envs::RunResult EvaluationObserver::evaluate(int64_t timesteps) {
+  // Seeds of their own per evaluation point, so evaluating never disturbs training: episode k
+  // resets with seed + k (the policy runner's rule).
+  envs::RunSettings settings;
+  settings.episodes = experiment_.eval_episodes;
+  settings.seed = experiment_.seed + 1000003 + timesteps;
+  settings.deterministic = experiment_.eval_deterministic;
+  envs::RunResult eval;
   if (experiment_.eval_n_envs > 1) {
     VecEnvOptions options = evaluation_env_options(experiment_);
     options.n_envs = experiment_.eval_n_envs;
     options.normalize_observation = options.normalize_reward = false;
     const std::unique_ptr<envs::VecEnv> envs = make_vec_env(options);
-    eval = evaluate_policy(algorithm_.policy(), *envs, experiment_.eval_episodes,
-                           experiment_.eval_deterministic, seed);
+    eval = envs::run_policy(algorithm_.policy(), *envs, settings);
   } else {
     std::unique_ptr<Env> env =
         make_evaluation_env(evaluation_env_options(experiment_), training_env_);
@@ -140,15 +143,11 @@ EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
           {"actions", experiment_.eval_deterministic ? "deterministic" : "stochastic"}};
       env = std::make_unique<envs::EpisodeRecorder>(std::move(env), std::move(options));
     }
-    eval = evaluate_policy(algorithm_.policy(), *env, experiment_.eval_episodes,
-                           experiment_.eval_deterministic, seed);
+    eval = envs::run_policy(algorithm_.policy(), *env, settings);
   }
-  double mean_length = 0.0;
-  for (int64_t length : eval.lengths) mean_length += static_cast<double>(length);
-  mean_length /= static_cast<double>(eval.lengths.size());
   std::ostringstream row;
   row << timesteps << ',' << exact_text(eval.mean_return()) << ',' << exact_text(eval.std_return())
-      << ',' << mean_length << ',' << eval.returns.size() << ',';
+      << ',' << eval.mean_length() << ',' << eval.episodes.size() << ',';
   if (const std::optional<double> rate = eval.success_rate()) row << exact_text(*rate);
   row << '\n';
   append_to_file(directory_ / "eval.csv", row.str(), "eval.csv");

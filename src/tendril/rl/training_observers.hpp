@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "tendril/core/scalar_log.hpp"
+#include "tendril/envs/runner/policy_runner.hpp"
 #include "tendril/rl/algorithm.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/experiment.hpp"
 
 namespace tendril::rl {
@@ -41,7 +41,7 @@ class EvaluationObserver : public Observer {
                      Algorithm& algorithm, const envs::VecEnv& training_env, bool resuming);
   bool on_iteration(const Progress& progress) override;
   // Evaluates now (the final evaluation), records it and returns it.
-  EvaluationResult evaluate(int64_t timesteps);
+  envs::RunResult evaluate(int64_t timesteps);
 
   std::optional<double> best_mean() const { return best_mean_; }
   int64_t best_timesteps() const { return best_timesteps_; }
