@@ -11,7 +11,7 @@ for seed in 0 1 2; do
   "$tendril" train "$source/configs/elastica/tracking3d_ppo_quick.yaml" --quiet \
     --set seed=$seed --set n_timesteps=24576 --set eval.freq=8192 --set eval.episodes=2 \
     --set checkpoint_freq=0 --set env.params.max_episode_steps=200 \
-    --out "$out/sweep/ppo_seed$seed"
+    -o "$out/sweep/ppo_seed$seed"
 done
-"$tendril" record "$out/sweep/ppo_seed0" --episodes 1
+"$tendril" run "$out/sweep/ppo_seed0" --episodes 1 --record "$out/sweep/ppo_seed0/episodes"
 "$sample_episodes" "$out/sweep/ppo_seed0/episodes"

@@ -262,6 +262,10 @@ fs::path newest_intact_checkpoint(const fs::path& run_directory,
 TrainResult train(const Experiment& experiment, const fs::path& run_directory,
                   const TrainOptions& options) {
   const std::string where = run_directory.string();
+  // A pause lands on a checkpoint: without checkpoints it would never come.
+  require(!options.stop_at || experiment.checkpoint_freq > 0,
+          "needs checkpoints to pause at: set checkpoint_freq (e.g. --set checkpoint_freq=100000)",
+          "--stop-at");
   require(!run_directory.empty(), "the run directory needs a name", "--out");
   std::error_code error;
   fs::create_directories(run_directory, error);
