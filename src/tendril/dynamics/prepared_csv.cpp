@@ -9,8 +9,8 @@
 #include <string_view>
 
 #include "tendril/core/atomic_file.hpp"
+#include "tendril/core/data_table.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/data/table.hpp"
 
 namespace tendril::dynamics {
 
@@ -69,7 +69,7 @@ SequenceData read_prepared_csv(const std::filesystem::path& file, const CsvColum
                          std::istreambuf_iterator<char>());
   data::verify_checksum(text, file);
   std::istringstream in(text);
-  // The data layer's files (data/table.hpp) open with '#' lines: format, columns, metadata,
+  // Data files (core/data_table.hpp) open with '#' lines: format, columns, metadata,
   // checksum.
   std::string line;
   int64_t line_number = 0;
