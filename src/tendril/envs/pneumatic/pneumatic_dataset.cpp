@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 
 #include "tendril/core/data_table.hpp"
@@ -55,6 +54,11 @@ data::TableSchema make_schema(bool with_pressures) {
   return schema;
 }
 
+std::string shortest(double value) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
+}
+
 // The commands' upper bound: the metadata's command_ceiling_bar, else the regulators' 1.5 bar.
 double command_ceiling(const std::vector<std::pair<std::string, std::string>>& metadata,
                        const std::string& where) {
@@ -95,11 +99,9 @@ std::pair<Eigen::Index, std::string> first_bad_row(const PneumaticDataset& data,
     for (int c = 0; c < 9; ++c) {
       const double command = data.commands_bar(k, c);
       if (command < 0.0 || command > ceiling) {
-        char text[160];
-        std::snprintf(text, sizeof text, "column %s: %.17g bar lies outside [0, %.17g] %s",
-                      chamber_column("command", c / 3 + 1, c % 3 + 1).c_str(), command, ceiling,
-                      "(the regulators' command range)");
-        return {k, text};
+        return {k, "column " + chamber_column("command", c / 3 + 1, c % 3 + 1) + ": " +
+                       shortest(command) + " bar lies outside [0, " + shortest(ceiling) +
+                       "] (the regulators' command range)"};
       }
     }
   }
