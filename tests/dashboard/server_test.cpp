@@ -591,10 +591,9 @@ TEST_F(ServerTest, CsvAnswersComeInPagesWithTheirProblemsCounted) {
     EXPECT_LT(page->body.size(), 2000000u);
     const std::smatch found = [&] {
       std::smatch m;
-      std::regex_search(
-          page->body, m,
-          std::regex(
-              R"re("next_offset":(\d+),.*"more":(true|false),"problems":\[(.*)\],"problem_count":(\d+))re"));
+      std::regex_search(page->body, m,
+                        std::regex(R"re("next_offset":(\d+),.*"more":(true|false),)re"
+                                   R"re("problems":\[(.*)\],"problem_count":(\d+))re"));
       return m;
     }();
     ASSERT_EQ(found.size(), 5u) << page->body.substr(page->body.size() - 300);

@@ -184,7 +184,8 @@ def test_conversion_errors_say_what_is_wrong():
         env.step(["a"])
     cartpole = tendril.make("CartPole-v1")
     cartpole.reset(seed=0)
-    with pytest.raises(tendril.Error, match=r"Discrete\(2\) action 9223372036854775808 lies outside"):
+    with pytest.raises(tendril.Error,
+                       match=r"Discrete\(2\) action 9223372036854775808 lies outside"):
         cartpole.step(np.uint64(2**63))
     with pytest.raises(tendril.Error, match="outside"):
         cartpole.step(np.uint64(7))

@@ -114,7 +114,8 @@ def test_vector_env_seeds_and_counts_are_checked():
             venv.reset(seed=seed)
     venv.reset(seed=2**64 - 2)
     for count in [2**31, 0, -3, 2.5, "2"]:
-        with pytest.raises(tendril.Error, match=r"num_envs must be an integer in \[1, 2147483647\]"):
+        with pytest.raises(tendril.Error,
+                           match=r"num_envs must be an integer in \[1, 2147483647\]"):
             tendril.make_vec("Pendulum-v1", count)
     with pytest.raises(tendril.Error, match="num_threads must be an integer"):
         tendril.make_vec("Pendulum-v1", 2, num_threads=0)
