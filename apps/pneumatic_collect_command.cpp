@@ -1,4 +1,4 @@
-// `tendril collect-pneumatic`: the data protocol of seed 002 §III-C on the pneumatic arm.
+// `tendril data collect` on the pneumatic arm: the data protocol of seed 002 §III-C.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -17,7 +17,7 @@ int pneumatic_collect(const Arguments& line) {
   const envs::pneumatic::CollectionReport report =
       envs::pneumatic::collect_pneumatic_dataset(config, line.value("output", ""), invocation);
   const auto& tips = report.data.tips_mm;
-  std::printf("tendril collect-pneumatic: %d rows (%.1f s of robot time) in %.2f s of wall time\n",
+  std::printf("tendril data collect: %d rows (%.1f s of robot time) in %.2f s of wall time\n",
               report.rows,
               report.data.time_s[report.rows - 1] + (report.rows > 1 ? report.data.time_s[1] : 0.0),
               report.wall_seconds);

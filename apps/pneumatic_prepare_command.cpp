@@ -1,4 +1,4 @@
-// `tendril prepare-pneumatic`: the pneumatic arm's recordings as the learned-dynamics layer's
+// `tendril data prepare`: the pneumatic arm's recordings as the learned-dynamics layer's
 // prepared data set (the file configs/dynamics/pneumatic_softsign_lstm.yaml reads).
 #include <cstdio>
 #include <string>

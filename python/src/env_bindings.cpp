@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "object_lock.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 
@@ -21,7 +22,9 @@ class PyEnv {
         env_(envs::make(id, params_from_json(params_json, "tendril.make('" + id + "') params"))),
         who_("tendril env " + id + " step") {}
 
-  py::array_t<float> reset(std::optional<uint64_t> seed) {
+  py::array_t<float> reset(const py::handle& seed_value) {
+    const auto lock = lock_.acquire();
+    const std::optional<uint64_t> seed = seed_from_python(seed_value, 1, "tendril env " + id_);
     Observation observation;
     {
       py::gil_scoped_release release;
@@ -32,6 +35,7 @@ class PyEnv {
   }
 
   py::tuple step(const py::handle& action_value) {
+    const auto lock = lock_.acquire();
     require(reset_, "call reset() before step()", who_);
     const Action action = action_from_python(env_->action_space(), action_value, who_);
     Step step;
@@ -43,25 +47,36 @@ class PyEnv {
                           info_to_dict(step.info));
   }
 
-  py::object scene() const {
+  py::object scene() {
+    const auto lock = lock_.acquire();
     Scene scene;
     if (!env_->describe_scene(scene)) return py::none();
     return scene_to_dict(scene);
   }
 
-  py::bytes save_state() const {
+  // The snapshot with a checksum: a changed or damaged copy is refused, not loaded.
+  py::bytes save_state() {
+    const auto lock = lock_.acquire();
     Snapshot bytes;
     SnapshotWriter writer(bytes);
     env_->save_state(writer);
-    return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    return checksummed_state(
+        std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   }
 
   void load_state(const py::bytes& state) {
-    const auto bytes = static_cast<std::string>(state);
+    const auto lock = lock_.acquire();
+    const std::string bytes =
+        verified_state(static_cast<std::string>(state), "tendril env " + id_ + " load_state");
     SnapshotReader reader(
         std::span<const std::byte>(reinterpret_cast<const std::byte*>(bytes.data()), bytes.size()));
     env_->load_state(reader);
     reset_ = true;
+  }
+
+  void close() {
+    const auto lock = lock_.acquire();
+    env_->close();
   }
 
   const std::string& id() const { return id_; }
@@ -78,6 +93,7 @@ class PyEnv {
   std::unique_ptr<Env> env_;
   std::string who_;
   bool reset_ = false;
+  ObjectLock lock_;  // one call at a time from Python threads (object_lock.hpp)
 };
 
 }  // namespace
@@ -108,7 +124,7 @@ void bind_env(py::module_& m) {
                              [](PyEnv& self) { return self.env().supports_snapshots(); })
       .def("save_state", &PyEnv::save_state)
       .def("load_state", &PyEnv::load_state, py::arg("state"))
-      .def("close", [](PyEnv& self) { self.env().close(); });
+      .def("close", &PyEnv::close);
 }
 
 }  // namespace tendril::python

@@ -1,6 +1,7 @@
 // The extension module under the `tendril` Python package (python/tendril).
 #include <pybind11/pybind11.h>
 
+#include <exception>
 #include <string>
 
 #include "bindings.hpp"
@@ -9,8 +10,21 @@
 
 PYBIND11_MODULE(_tendril, m) {
   m.doc() = "tendril's environments, vector environments, policies and trainer (C++).";
-  // tendril::Error becomes tendril.Error, a ValueError carrying tendril's message.
-  pybind11::register_exception<tendril::Error>(m, "Error", PyExc_ValueError);
+  // tendril::Error becomes tendril.Error, a ValueError carrying tendril's message. A message
+  // may quote bytes from a damaged file that are not UTF-8: they appear as \xNN escapes (a
+  // strict decoding would fail and leave the exception without its message).
+  static pybind11::exception<tendril::Error> error(m, "Error", PyExc_ValueError);
+  pybind11::register_exception_translator([](std::exception_ptr raised) {
+    try {
+      if (raised) std::rethrow_exception(raised);
+    } catch (const tendril::Error& e) {
+      const std::string text = e.what();
+      PyObject* message = PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()),
+                                               "backslashreplace");
+      PyErr_SetObject(error.ptr(), message);
+      Py_XDECREF(message);
+    }
+  });
   tendril::python::bind_env(m);
   tendril::python::bind_vec_env(m);
   tendril::python::bind_policy(m);

@@ -9,10 +9,10 @@ in C++ (with a Stable-Baselines3 adapter), trained policies and the trainer.
 from ._tendril import Error, numerics
 from .env import TendrilEnv, gymnasium_id, make, register_with_gymnasium, registry
 from .policy import Policy, load
-from .training import train
+from .training import resume, train
 from .vector import VecEnv, make_vec
 
 __all__ = ["Error", "Policy", "TendrilEnv", "VecEnv", "gymnasium_id", "load", "make",
-           "make_vec", "numerics", "registry", "train"]
+           "make_vec", "numerics", "registry", "resume", "train"]
 
 register_with_gymnasium()

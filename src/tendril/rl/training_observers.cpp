@@ -201,7 +201,7 @@ void EvaluationObserver::restore(int64_t up_to) {
 }
 
 // Recordings of evaluations past the checkpoint (complete or cut short by a kill) go with their
-// eval.csv rows; `tendril record`'s files and other names are left alone.
+// eval.csv rows; `tendril run --record`'s files and other names are left alone.
 void EvaluationObserver::remove_recordings_after(int64_t up_to) const {
   const fs::path folder = directory_ / "episodes";
   if (!fs::is_directory(folder)) return;
