@@ -100,6 +100,13 @@ commands:
       Train a task agent with a safety agent co-trained from its rollouts (the experiment's
       `safety:` section; writes model.policy and safety.critic); evaluate return and safety
       rate of the task policy with and without the safety filter at threshold E.
+  robot emulate limb|arm [--pace realtime|lockstep] ...
+  robot check limb --port DEVICE | arm --udp-port P --mocap-port P [--steps N]
+  robot deploy <run-dir> --set env.params.backend=bridge ... [--filter [--epsilon E]]
+      The link to a real robot (docs/hardware.md): emulate the SMA limb (its firmware in
+      simavr on a pseudo-terminal) or the pneumatic arm's lab (UDP); check a connection
+      (handshake, round trip, sensor and control rates, limits); deploy a run's policy on the
+      robot through the bridge, optionally through its safety filter.
   list-envs
       The registered environment ids.
   help
@@ -134,6 +141,7 @@ int main(int argc, char** argv) {
     if (args[0] == "plot") return tendril::apps::plot_command(rest);
 #ifdef TENDRIL_WITH_ENVS
     if (args[0] == "list-envs") return tendril::apps::list_envs_command(rest);
+    if (args[0] == "robot") return tendril::apps::robot_command(rest);
     if (args[0] == "collect-pneumatic") return tendril::apps::pneumatic_collect_command(rest);
     if (args[0] == "replay-pneumatic") return tendril::apps::pneumatic_replay_command(rest);
 #endif
