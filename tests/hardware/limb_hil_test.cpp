@@ -37,13 +37,32 @@ void expect_same_log(const envs::sma_limb::LimbLog& twin, const envs::sma_limb::
   EXPECT_EQ(twin.cutoffs, bridge.cutoffs);
 }
 
+// The twin with the firmware's cut-off (docs/protocol.md): while the newest reading is at or
+// beyond 100° on either axis the coils stay off. Calibration drives the twin directly, below
+// SmaLimbEnv, which otherwise applies the cut-off on the host.
+class CutoffTwin final : public envs::sma_limb::LimbRobot {
+ public:
+  envs::sma_limb::LimbSample reset(uint64_t seed) override { return last_ = twin_.reset(seed); }
+  envs::sma_limb::LimbSample command(const std::array<int, 4>& pwm) override {
+    const bool cutoff = last_.angles_deg.cwiseAbs().maxCoeff() >= 100.0;
+    return last_ = twin_.command(cutoff ? std::array<int, 4>{} : pwm);
+  }
+  std::string description() const override { return twin_.description(); }
+
+ private:
+  envs::sma_limb::TwinLimbRobot twin_{physics::SmaLimbSpec::stiff()};
+  envs::sma_limb::LimbSample last_;
+};
+
 TEST(LimbHil, CalibrationSweepsThroughTheFirmwareEqualTheTwins) {
+  // Shortened sweeps (the thesis' holds are 2.5 s, its cool-downs 2 min): 19 holds, 25 s of
+  // robot time.
   envs::sma_limb::CalibrationSettings settings;
-  settings.rest_s = 1.0;
-  settings.hold_s = 1.0;
-  settings.cooldown_s = 4.0;
-  settings.start_pwm = 20;
-  envs::sma_limb::TwinLimbRobot twin(physics::SmaLimbSpec::stiff());
+  settings.rest_s = 0.6;
+  settings.hold_s = 0.8;
+  settings.cooldown_s = 0.5;
+  settings.start_pwm = 30;
+  CutoffTwin twin;
   const auto expected = envs::sma_limb::calibrate(twin, settings, "stiff", 5);
 
   LimbEmulator emulator(emulator_settings());
@@ -57,6 +76,7 @@ TEST(LimbHil, CalibrationSweepsThroughTheFirmwareEqualTheTwins) {
   EXPECT_EQ(got.calibration.zero_offset_deg, expected.calibration.zero_offset_deg);
   EXPECT_EQ(got.robot_time_s, expected.robot_time_s);
   ASSERT_EQ(got.holds.size(), expected.holds.size());
+  ASSERT_GE(got.holds.size(), 10u);
   for (size_t h = 0; h < got.holds.size(); ++h) {
     EXPECT_EQ(got.holds[h].pwm, expected.holds[h].pwm);
     EXPECT_EQ(got.holds[h].angle_deg, expected.holds[h].angle_deg) << "hold " << h;
@@ -121,7 +141,7 @@ TEST(LimbHil, AClosedLoopControllerThroughTheFirmwareTracksAsOnTheTwin) {
     EnvLimb limb(env);
     control::PidController pid;
     control::WaypointFollower follower(path);
-    control::TrackingRun run = control::track(limb, pid, follower, 400);
+    control::TrackingRun run = control::track(limb, pid, follower, 200);
     if (info != nullptr) *info = limb.info();
     return run;
   };

@@ -40,7 +40,9 @@ ArmBridgeSettings ArmBridgeSettings::from(const Config& bridge) {
   s.reconnect_wait_s = bridge.get_or<double>("reconnect_wait_s", s.reconnect_wait_s);
   s.handshake_timeout_s = bridge.get_or<double>("handshake_timeout_s", s.handshake_timeout_s);
   s.log_file = bridge.get_or<std::string>("log", s.log_file);
-  for (const char* key : {"max_rate_hz", "ack_timeout_s", "frame_timeout_s", "max_latency_s",
+  require(std::isfinite(s.max_rate_hz) && s.max_rate_hz >= 0.0, "max_rate_hz must be >= 0",
+          bridge.where("max_rate_hz"));
+  for (const char* key : {"ack_timeout_s", "frame_timeout_s", "max_latency_s",
                           "reconnect_wait_s", "handshake_timeout_s"}) {
     const double value = bridge.get<double>(key);
     require(std::isfinite(value) && value > 0.0, "must be positive", bridge.where(key));
@@ -295,8 +297,9 @@ ArmBridgeSample ArmBridge::command(const ChamberVector& bar) {
     }
     log_.record("clamp", "pressure command clamped to [0, " + std::to_string(max_bar_) + "] bar");
   }
-  const auto min_gap = span_of(1.0 / settings_.max_rate_hz);
-  if (last_command_ != Clock::time_point{} && Clock::now() - last_command_ < min_gap) {
+  const auto min_gap = span_of(settings_.max_rate_hz > 0.0 ? 1.0 / settings_.max_rate_hz : 0.0);
+  if (settings_.max_rate_hz > 0.0 && last_command_ != Clock::time_point{} &&
+      Clock::now() - last_command_ < min_gap) {
     log_.record("rate_limit", "command " +
                                   std::to_string(1e3 * seconds(Clock::now() - last_command_)) +
                                   " ms after the previous one; held back");

@@ -21,7 +21,9 @@ struct ArmBridgeSettings {
   std::string robot = "pneumatic-arm";
   double max_bar = -1.0;        // host limit per chamber; < 0: the regulators' ceiling
   bool clamp = true;            // above it or below 0: clamp (logged) or refuse (Error)
-  double max_rate_hz = 12.0;    // the regulators take 10 Hz; closer commands wait (logged)
+  // Commands closer together than 1 / max_rate_hz (wall clock) wait, logged; 0: no limit
+  // (each step waits for its capture samples anyway).
+  double max_rate_hz = 0.0;
   double ack_timeout_s = 0.2;
   int command_retries = 2;
   double frame_timeout_s = 0.5;  // no motion-capture frame for this long: stale

@@ -47,7 +47,8 @@ LimbBridgeSettings LimbBridgeSettings::from(const Config& bridge, const std::str
                   bridge.where(key));
     }
   };
-  positive(s.max_rate_hz, "max_rate_hz");
+  require(std::isfinite(s.max_rate_hz) && s.max_rate_hz >= 0.0, "max_rate_hz must be >= 0",
+          bridge.where("max_rate_hz"));
   positive(s.ack_timeout_s, "ack_timeout_s");
   positive(s.reading_timeout_s, "reading_timeout_s");
   positive(s.max_latency_s, "max_latency_s");
@@ -311,9 +312,10 @@ LimbBridgeSample LimbBridge::command(const std::array<int, 4>& pwm) {
                 port_name_);
   }
   const std::array<int, 4> limited = limit(pwm);
-  const auto min_gap = span_of(1.0 / settings_.max_rate_hz);
+  const auto min_gap = span_of(settings_.max_rate_hz > 0.0 ? 1.0 / settings_.max_rate_hz : 0.0);
   const auto now = Clock::now();
-  if (last_command_ != Clock::time_point{} && now - last_command_ < min_gap) {
+  if (settings_.max_rate_hz > 0.0 && last_command_ != Clock::time_point{} &&
+      now - last_command_ < min_gap) {
     log_.record("rate_limit", "command " + std::to_string(1e3 * seconds(now - last_command_)) +
                                   " ms after the previous one; held back");
     std::this_thread::sleep_until(last_command_ + min_gap);

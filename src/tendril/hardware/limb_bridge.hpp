@@ -22,7 +22,9 @@ struct LimbBridgeSettings {
   std::string robot = "sma-limb";  // the identity the handshake must report
   int max_pwm = -1;                // host limit per coil; -1: the firmware's max_pwm
   bool clamp = true;               // above max_pwm: clamp (logged) or refuse (Error)
-  double max_rate_hz = 40.0;       // commands closer together wait (logged)
+  // Commands closer together than 1 / max_rate_hz (wall clock) wait, logged; 0: no limit
+  // (the sensor paces the limb anyway: one command per reading).
+  double max_rate_hz = 0.0;
   double ack_timeout_s = 0.1;      // no COMMAND_ACK by then: the command is sent again
   int command_retries = 2;
   double reading_timeout_s = 0.5;  // no new reading by then: stale — safe command and Error

@@ -73,6 +73,7 @@ struct LimbEmulator::Impl {
   std::atomic<bool> frozen{false}, silent{false};
 
   // Pacing.
+  uint16_t host_epoch = kNoSeq;  // the host's last RESET
   bool waiting_for_host = false;
   std::chrono::steady_clock::time_point wait_began;
   bool host_present = false;
@@ -101,7 +102,6 @@ struct LimbEmulator::Impl {
 
   // The sensor: latch a reading and pull data-ready low (the firmware's INT0 falling edge).
   void present(const physics::BendReading& reading) {
-    if (std::getenv("HB_TRACE")) std::fprintf(stderr, "drdy t=%lld @%llu\n", (long long)reading.time_ms, (unsigned long long)avr->cycle);
     if (!reading.angles_deg.allFinite()) {
       sensor_nack = true;
       return;
@@ -156,7 +156,6 @@ struct LimbEmulator::Impl {
     avr_twi_msg_irq_t message;
     message.u.v = value;
     const uint8_t msg = message.u.twi.msg;
-    if (std::getenv("HB_TRACE")) std::fprintf(stderr, "twi msg %02x addr %02x data %02x\n", msg, message.u.twi.addr, message.u.twi.data);
     if (msg & TWI_COND_STOP) self->selected = false;
     if (msg & TWI_COND_START) {
       self->selected = false;
@@ -179,15 +178,23 @@ struct LimbEmulator::Impl {
   static void uart_from_avr(avr_irq_t*, uint32_t value, void* param) {
     auto* self = static_cast<Impl*>(param);
     const uint8_t byte = static_cast<uint8_t>(value);
-    if (std::getenv("HB_TRACE")) std::fprintf(stderr, "tx %02x @%llu\n", byte, (unsigned long long)self->avr->cycle);
     self->to_host.push_back(byte);
     self->robot_frames.push(byte);
     while (auto frame = self->robot_frames.next()) {
-      if (frame->type == static_cast<uint8_t>(MessageType::kLimbReading) && self->host_present &&
-          self->settings.pace == EmulatorPace::kLockstep) {
-        self->waiting_for_host = true;
-        self->wait_began = std::chrono::steady_clock::now();
+      if (frame->type != static_cast<uint8_t>(MessageType::kLimbReading) || !self->host_present ||
+          self->settings.pace != EmulatorPace::kLockstep) {
+        continue;
       }
+      // Only a reading of the host's own epoch awaits an answer (an older epoch's, sent while
+      // the host's RESET was on its way, does not).
+      try {
+        const LimbReading reading = LimbReading::decode(frame->payload);
+        if (reading.reset_seq == kNoSeq || reading.reset_seq != self->host_epoch) continue;
+      } catch (const Error&) {
+        continue;
+      }
+      self->waiting_for_host = true;
+      self->wait_began = std::chrono::steady_clock::now();
     }
   }
 
@@ -219,6 +226,7 @@ struct LimbEmulator::Impl {
       ++host_frame_count;
     }
     if (frame.type == static_cast<uint8_t>(MessageType::kReset)) {
+      host_epoch = frame.seq;
       try {
         rebuild_twin(ResetRequest::decode(frame.payload).seed.value_or(0));
       } catch (const Error&) {
@@ -251,7 +259,6 @@ struct LimbEmulator::Impl {
       uint8_t buffer[512];
       const ssize_t n = ::read(master, buffer, sizeof buffer);
       for (ssize_t i = 0; i < n; ++i) {
-        if (std::getenv("HB_TRACE")) std::fprintf(stderr, "rx %02x\n", buffer[i]);
         to_robot.push_back(buffer[i]);
         host_frames.push(buffer[i]);
         while (auto frame = host_frames.next()) host_frame(*frame);
