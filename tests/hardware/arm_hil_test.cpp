@@ -35,9 +35,13 @@ struct Lab {
     emulator = std::make_unique<ArmEmulator>(settings);
     emulator->start();
   }
+  // `backend: bridge, bridge: {...}` as a flow mapping's entries.
+  std::string bridge_entries(const std::string& extra = "") const {
+    return "backend: bridge, bridge: {udp_port: " + std::to_string(emulator->command_port()) +
+           ", mocap_port: " + std::to_string(mocap_port) + extra + "}";
+  }
   std::string bridge_yaml(const std::string& extra = "") const {
-    return "backend: bridge\nbridge: {udp_port: " + std::to_string(emulator->command_port()) +
-           ", mocap_port: " + std::to_string(mocap_port) + extra + "}\n";
+    return "{" + bridge_entries(extra) + "}";
   }
   int mocap_port = 0;
   std::unique_ptr<ArmEmulator> emulator;
@@ -56,7 +60,7 @@ TEST(ArmHil, ATrialThroughTheLabsDevicesEqualsTheTwins) {
   auto twin = envs::pneumatic::RobotEnv::create(twin_params);
   Lab lab(twin_params);
   auto bridged = envs::pneumatic::RobotEnv::create(
-      Config::parse("observe_pressures: true\n" + lab.bridge_yaml()));
+      Config::parse("{observe_pressures: true, " + lab.bridge_entries() + "}"));
   ASSERT_EQ(bridged->observation_space().size(), twin->observation_space().size());
   EXPECT_EQ(bridged->action_space().high(), twin->action_space().high());
   EXPECT_EQ(bridged->reset(4), twin->reset(4));
@@ -94,7 +98,7 @@ TEST(ArmHil, AGprcaTrialOnTheEmulatedLabEqualsTheTwins) {
   auto twin_robot = adapt::PneumaticReachingRobot::on_robot(Config::parse(task));
   Lab lab(Config::parse("{}"));
   auto bridge_robot = adapt::PneumaticReachingRobot::on_robot(
-      Config::parse(task + "robot:\n  " + lab.bridge_yaml()));
+      Config::parse(task + "robot: " + lab.bridge_yaml()));
   const SteadyPolicy policy(twin_robot->env().observation_space(),
                             twin_robot->env().action_space());
   adapt::GprcaTrialsOptions options;

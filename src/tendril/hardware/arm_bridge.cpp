@@ -42,9 +42,11 @@ ArmBridgeSettings ArmBridgeSettings::from(const Config& bridge) {
   s.log_file = bridge.get_or<std::string>("log", s.log_file);
   require(std::isfinite(s.max_rate_hz) && s.max_rate_hz >= 0.0, "max_rate_hz must be >= 0",
           bridge.where("max_rate_hz"));
-  for (const char* key : {"ack_timeout_s", "frame_timeout_s", "max_latency_s",
-                          "reconnect_wait_s", "handshake_timeout_s"}) {
-    const double value = bridge.get<double>(key);
+  const std::pair<const char*, double> positive[] = {
+      {"ack_timeout_s", s.ack_timeout_s},     {"frame_timeout_s", s.frame_timeout_s},
+      {"max_latency_s", s.max_latency_s},     {"reconnect_wait_s", s.reconnect_wait_s},
+      {"handshake_timeout_s", s.handshake_timeout_s}};
+  for (const auto& [key, value] : positive) {
     require(std::isfinite(value) && value > 0.0, "must be positive", bridge.where(key));
   }
   require(s.command_retries >= 0 && s.reconnect_attempts >= 0 && s.frozen_frames >= 0,
@@ -203,6 +205,17 @@ ArmBridgeSample ArmBridge::await_sample(uint32_t sample, Clock::time_point deadl
       }
     }
     if (found) {
+      // The regulators report each sample on their own channel: wait briefly for its report.
+      const auto report_deadline = std::min(deadline, Clock::now() + std::chrono::milliseconds(50));
+      auto has_report = [&] {
+        return std::any_of(reports_.begin(), reports_.end(),
+                           [&](const auto& r) { return r.first == found->sample; });
+      };
+      while (!has_report()) {
+        auto frame = commands_.next(report_deadline);
+        if (!frame) break;
+        handle_other(*frame);
+      }
       ArmBridgeSample out;
       out.sample = found->sample;
       out.time_s = found->time_s;
