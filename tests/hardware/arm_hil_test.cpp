@@ -150,5 +150,19 @@ TEST(ArmHil, LostCaptureFramesAndAFrozenOrSilentCaptureAreAnswered) {
   EXPECT_EQ(bridge.log().count("clamp"), 1);
 }
 
+TEST(RobotBackends, AnUnknownBackendOrAMissingLinkIsAnErrorNamingTheKey) {
+  for (const char* yaml : {"{backend: hardware}", "{backend: bridge, bridge: {}}"}) {
+    try {
+      envs::pneumatic::RobotEnv::create(Config::parse(yaml));
+      FAIL() << yaml;
+    } catch (const Error& error) {
+      const std::string text = error.what();
+      EXPECT_TRUE(text.find("backend") != std::string::npos ||
+                  text.find("udp_port") != std::string::npos)
+          << text;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tendril::hardware

@@ -36,7 +36,7 @@ void finish(LinkCheck& check, double robot_start, double robot_end, Clock::time_
 std::string LinkCheck::report() const {
   std::string out = "robot " + robot + ", firmware " + firmware + "\nlimits:";
   for (const auto& [key, value] : limits) out += " " + key + "=" + std::to_string(value);
-  char text[256];
+  char text[1024];
   std::snprintf(text, sizeof text,
                 "\nround trip (PING): %s\ncommand round trip: %s\n"
                 "%d steps: %.3f s of robot time, %.3f s of wall time; sensor %.2f Hz (robot "
