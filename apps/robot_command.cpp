@@ -36,7 +36,8 @@ namespace tendril::apps {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tendril robot emulate limb [--link PATH] [--limb stiff|soft] [--pace realtime|lockstep]\n"
+    "usage: tendril robot emulate limb [--link PATH] [--limb stiff|soft] [--pace "
+    "realtime|lockstep]\n"
     "                                  [--firmware ELF] [--seed S]\n"
     "       tendril robot emulate arm [--command-port P] [--mocap-port P] [--pace ...]\n"
     "                                 [--set <PneumaticArm/Robot-v0 param>=V ...]\n"
@@ -60,8 +61,7 @@ int emulate(const std::vector<std::string>& args) {
       args, {"link", "limb", "pace", "firmware", "seed", "command-port", "mocap-port"}, {});
   require(line.positional.size() == 1, "expected `limb` or `arm`", "tendril robot emulate");
   const std::string robot = line.positional.front();
-  const hardware::EmulatorPace pace =
-      hardware::pace_from(line.value("pace", "realtime"), "--pace");
+  const hardware::EmulatorPace pace = hardware::pace_from(line.value("pace", "realtime"), "--pace");
   catch_signals();
   if (robot == "limb") {
 #ifdef TENDRIL_WITH_SIMAVR
@@ -93,17 +93,18 @@ int emulate(const std::vector<std::string>& args) {
   settings.mocap_port = static_cast<int>(line.integer("mocap-port", 51001, 1, 65535));
   settings.pace = pace;
   hardware::ArmEmulator emulator(settings);
-  std::printf("pneumatic arm lab: regulators on udp 127.0.0.1:%d, motion capture streaming to "
-              "127.0.0.1:%d\nCtrl-C stops it.\n",
-              emulator.command_port(), settings.mocap_port);
+  std::printf(
+      "pneumatic arm lab: regulators on udp 127.0.0.1:%d, motion capture streaming to "
+      "127.0.0.1:%d\nCtrl-C stops it.\n",
+      emulator.command_port(), settings.mocap_port);
   std::fflush(stdout);
   emulator.run_until([] { return interrupted.load(); }, 1e9);
   return 0;
 }
 
 int check(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(
-      args, {"port", "baud", "pings", "steps", "udp-port", "mocap-port"}, {});
+  const CommandLine line =
+      CommandLine::parse(args, {"port", "baud", "pings", "steps", "udp-port", "mocap-port"}, {});
   require(line.positional.size() == 1, "expected `limb` or `arm`", "tendril robot check");
   const int pings = static_cast<int>(line.integer("pings", 50, 0, 100000));
   const int steps = static_cast<int>(line.integer("steps", 100, 1, 1000000));
@@ -130,8 +131,8 @@ int check(const std::vector<std::string>& args) {
 
 int deploy(const std::vector<std::string>& args) {
 #ifdef TENDRIL_WITH_RL
-  const CommandLine line = CommandLine::parse(
-      args, {"episodes", "steps", "seed", "csv", "epsilon"}, {"best", "filter"});
+  const CommandLine line =
+      CommandLine::parse(args, {"episodes", "steps", "seed", "csv", "epsilon"}, {"best", "filter"});
   require(line.positional.size() == 1, "expected one run directory", "tendril robot deploy");
   RunPolicy run = open_run_policy(line.positional.front(), line.has("best"), line.overrides);
   Rng rng(line.unsigned_integer("seed", 0));
@@ -144,8 +145,8 @@ int deploy(const std::vector<std::string>& args) {
   if (line.has("filter")) {
     critic = safety::load_safety_critic(std::filesystem::path(line.positional.front()) /
                                         "safety.critic");
-    filter = std::make_unique<safety::SafetyFilter>(
-        actor, *critic, std::stod(line.value("epsilon", "0")));
+    filter = std::make_unique<safety::SafetyFilter>(actor, *critic,
+                                                    std::stod(line.value("epsilon", "0")));
     actor = [&](const Observation& o) { return filter->act(o); };
   }
 #else

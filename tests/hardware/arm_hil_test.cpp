@@ -97,8 +97,8 @@ TEST(ArmHil, AGprcaTrialOnTheEmulatedLabEqualsTheTwins) {
   const std::string task = "observe_command: true\n";
   auto twin_robot = adapt::PneumaticReachingRobot::on_robot(Config::parse(task));
   Lab lab(Config::parse("{}"));
-  auto bridge_robot = adapt::PneumaticReachingRobot::on_robot(
-      Config::parse(task + "robot: " + lab.bridge_yaml()));
+  auto bridge_robot =
+      adapt::PneumaticReachingRobot::on_robot(Config::parse(task + "robot: " + lab.bridge_yaml()));
   const SteadyPolicy policy(twin_robot->env().observation_space(),
                             twin_robot->env().action_space());
   adapt::GprcaTrialsOptions options;

@@ -24,10 +24,14 @@ using testing::emulator_settings;
 std::array<int, 4> drive(int step) {
   const int duty = 22 + (step * 7) % 15;
   switch ((step / 6) % 4) {
-    case 0: return {duty, 0, 0, 0};
-    case 1: return {0, 0, duty, 0};
-    case 2: return {0, duty, 0, 0};
-    default: return {0, 0, 0, duty};
+    case 0:
+      return {duty, 0, 0, 0};
+    case 1:
+      return {0, 0, duty, 0};
+    case 2:
+      return {0, duty, 0, 0};
+    default:
+      return {0, 0, 0, duty};
   }
 }
 

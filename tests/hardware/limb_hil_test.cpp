@@ -124,7 +124,8 @@ class EnvLimb final : public control::TrackedLimb {
   control::LimbState state(const Observation& o) {
     const Eigen::Vector2d angles(o[0], o[1]);
     const double dt = o[2] - time_;
-    const Eigen::Vector2d rates = dt > 0 ? ((angles - angles_) / dt).eval() : Eigen::Vector2d::Zero();
+    const Eigen::Vector2d rates =
+        dt > 0 ? ((angles - angles_) / dt).eval() : Eigen::Vector2d::Zero();
     time_ = o[2];
     angles_ = angles;
     return {o[2], angles, rates};

@@ -43,8 +43,10 @@ ArmBridgeSettings ArmBridgeSettings::from(const Config& bridge) {
   require(std::isfinite(s.max_rate_hz) && s.max_rate_hz >= 0.0, "max_rate_hz must be >= 0",
           bridge.where("max_rate_hz"));
   const std::pair<const char*, double> positive[] = {
-      {"ack_timeout_s", s.ack_timeout_s},     {"frame_timeout_s", s.frame_timeout_s},
-      {"max_latency_s", s.max_latency_s},     {"reconnect_wait_s", s.reconnect_wait_s},
+      {"ack_timeout_s", s.ack_timeout_s},
+      {"frame_timeout_s", s.frame_timeout_s},
+      {"max_latency_s", s.max_latency_s},
+      {"reconnect_wait_s", s.reconnect_wait_s},
       {"handshake_timeout_s", s.handshake_timeout_s}};
   for (const auto& [key, value] : positive) {
     require(std::isfinite(value) && value > 0.0, "must be positive", bridge.where(key));
@@ -91,9 +93,10 @@ void ArmBridge::handshake() {
     const auto ceiling = identity.limit("ceiling_mbar");
     if (!ceiling || identity.limit("chambers").value_or(0) != kChambers ||
         identity.limit("markers").value_or(0) != kModules) {
-      throw Error("the robot's identity lacks ceiling_mbar or has other than 9 chambers and 3 "
-                  "markers",
-                  name_);
+      throw Error(
+          "the robot's identity lacks ceiling_mbar or has other than 9 chambers and 3 "
+          "markers",
+          name_);
     }
     max_bar_ = *ceiling / 1000.0;
     if (settings_.max_bar >= 0.0) max_bar_ = std::min(max_bar_, settings_.max_bar);
@@ -165,8 +168,8 @@ void ArmBridge::lost_link(const std::string& cause) {
                       "); it is back, the chambers are vented, and the trial must be reset",
                   name_);
     } catch (const LinkDown& again) {
-      log_.record("reconnect", "attempt " + std::to_string(attempt) + " failed: " +
-                                   again.what_wrong());
+      log_.record("reconnect",
+                  "attempt " + std::to_string(attempt) + " failed: " + again.what_wrong());
     }
   }
   throw LinkDown("the link was lost (" + cause + ") and did not come back after " +
@@ -183,8 +186,8 @@ void ArmBridge::handle_other(const Frame& frame) {
     }
     case MessageType::kRefused: {
       const Refused refused = Refused::decode(frame.payload);
-      log_.record("robot_refused", "command #" + std::to_string(refused.seq) + ": " +
-                                       refuse_name(refused.reason));
+      log_.record("robot_refused",
+                  "command #" + std::to_string(refused.seq) + ": " + refuse_name(refused.reason));
       refused_seq_ = refused.seq;
       refused_reason_ = refused.reason;
       break;
@@ -237,8 +240,8 @@ ArmBridgeSample ArmBridge::await_sample(uint32_t sample, Clock::time_point deadl
       std::erase_if(reports_, [&](const auto& r) { return r.first < found->sample; });
       if (found->sample > sample) {
         out.frames_missed = static_cast<int>(found->sample - sample);
-        log_.record("frame_lost", "capture frame " + std::to_string(sample) +
-                                      " lost; frame " + std::to_string(found->sample) + " used");
+        log_.record("frame_lost", "capture frame " + std::to_string(sample) + " lost; frame " +
+                                      std::to_string(found->sample) + " used");
       }
       const bool same = out.tips_m == last_tips_;
       identical_ = same ? identical_ + static_cast<int>(found->sample - sample_) : 0;
@@ -338,8 +341,8 @@ ArmBridgeSample ArmBridge::command(const ChamberVector& bar) {
                                    std::to_string(retries + 1) + " tries");
         }
         ++retries;
-        log_.record("command_resent", "no acknowledgement within " +
-                                          std::to_string(settings_.ack_timeout_s) + " s");
+        log_.record("command_resent",
+                    "no acknowledgement within " + std::to_string(settings_.ack_timeout_s) + " s");
         sent = Clock::now();
         acks_.push_back(commands_.send(MessageType::kPressureCommand, message.encode()));
         ack_deadline = sent + span_of(settings_.ack_timeout_s);
@@ -363,8 +366,8 @@ ArmBridgeSample ArmBridge::command(const ChamberVector& bar) {
       handle_other(*frame);
       if (std::find(acks_.begin(), acks_.end(), refused_seq_) != acks_.end()) {
         refused_seq_ = kNoSeq;
-        fail("refuse", std::string("the regulators refused the command: ") +
-                           refuse_name(refused_reason_));
+        fail("refuse",
+             std::string("the regulators refused the command: ") + refuse_name(refused_reason_));
       }
       for (const auto& [number, report] : reports_) {
         if (std::find(acks_.begin(), acks_.end(), report.acked_seq) != acks_.end()) {

@@ -19,8 +19,8 @@ namespace tendril::hardware {
 // `bridge:` map of PneumaticArm/Robot-v0; docs/hardware.md).
 struct ArmBridgeSettings {
   std::string robot = "pneumatic-arm";
-  double max_bar = -1.0;        // host limit per chamber; < 0: the regulators' ceiling
-  bool clamp = true;            // above it or below 0: clamp (logged) or refuse (Error)
+  double max_bar = -1.0;  // host limit per chamber; < 0: the regulators' ceiling
+  bool clamp = true;      // above it or below 0: clamp (logged) or refuse (Error)
   // Commands closer together than 1 / max_rate_hz (wall clock) wait, logged; 0: no limit
   // (each step waits for its capture samples anyway).
   double max_rate_hz = 0.0;

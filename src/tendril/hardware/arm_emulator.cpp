@@ -63,8 +63,7 @@ struct ArmEmulator::Impl {
                  {"markers", kModules},
                  {"ceiling_mbar",
                   static_cast<int32_t>(std::lround(1000 * settings.spec.regulators.ceiling_bar))},
-                 {"sample_period_us",
-                  static_cast<int32_t>(std::lround(1e6 * arm.sample_period()))},
+                 {"sample_period_us", static_cast<int32_t>(std::lround(1e6 * arm.sample_period()))},
                  {"command_rate_hz", 10}};
     return id;
   }
@@ -177,9 +176,9 @@ struct ArmEmulator::Impl {
   void step() {
     // Listen for the host: briefly while the robot runs, longer while it waits.
     const bool lockstep = settings.pace == EmulatorPace::kLockstep;
-    const bool holding = lockstep && in_trial && budget == 0 &&
-                         Clock::now() - wait_began <
-                             std::chrono::duration<double>(settings.host_wait_s);
+    const bool holding =
+        lockstep && in_trial && budget == 0 &&
+        Clock::now() - wait_began < std::chrono::duration<double>(settings.host_wait_s);
     const auto now = Clock::now();
     Clock::time_point deadline = now;
     if (holding) {
@@ -216,8 +215,8 @@ ArmEmulator::ArmEmulator(ArmEmulatorSettings settings) {
   auto mocap_link =
       std::make_unique<UdpTransport>("127.0.0.1", 0, settings.mocap_host, settings.mocap_port);
   require(settings.samples_per_command >= 1, "samples_per_command must be >= 1", "ArmEmulator");
-  impl_ = std::make_unique<Impl>(std::move(settings), std::move(command_link),
-                                 std::move(mocap_link));
+  impl_ =
+      std::make_unique<Impl>(std::move(settings), std::move(command_link), std::move(mocap_link));
 }
 
 ArmEmulator::~ArmEmulator() { stop(); }

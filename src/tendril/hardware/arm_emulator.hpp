@@ -15,7 +15,7 @@ struct ArmEmulatorSettings {
   physics::pneumatic::PneumaticArmSpec spec;
   int command_port = 0;  // UDP port of the pressure-command channel (0: any free one)
   std::string mocap_host = "127.0.0.1";
-  int mocap_port = 0;    // where the motion capture streams to (the host's port)
+  int mocap_port = 0;  // where the motion capture streams to (the host's port)
   EmulatorPace pace = EmulatorPace::kLockstep;
   int samples_per_command = 10;  // lockstep: robot time one command buys (10 × 10 ms)
   double host_wait_s = 5.0;

@@ -41,17 +41,20 @@ DeployResult deploy(Env& env, const std::function<Action(const Observation&)>& a
         if (csv.file != nullptr) {
           if (!csv.header) {
             std::fputs("episode,step,reward,terminated,truncated", csv.file);
-            for (Eigen::Index i = 0; i < action.size(); ++i) std::fprintf(csv.file, ",action_%ld", static_cast<long>(i));
+            for (Eigen::Index i = 0; i < action.size(); ++i)
+              std::fprintf(csv.file, ",action_%ld", static_cast<long>(i));
             for (Eigen::Index i = 0; i < s.observation.size(); ++i) {
               std::fprintf(csv.file, ",observation_%ld", static_cast<long>(i));
             }
-            for (const auto& entry : s.info.entries()) std::fprintf(csv.file, ",%s", entry.first.c_str());
+            for (const auto& entry : s.info.entries())
+              std::fprintf(csv.file, ",%s", entry.first.c_str());
             std::fputc('\n', csv.file);
             csv.header = true;
           }
           std::fprintf(csv.file, "%d,%d,%.17g,%d,%d", episode, step, s.reward, s.terminated,
                        s.truncated);
-          for (Eigen::Index i = 0; i < action.size(); ++i) std::fprintf(csv.file, ",%.9g", action[i]);
+          for (Eigen::Index i = 0; i < action.size(); ++i)
+            std::fprintf(csv.file, ",%.9g", action[i]);
           for (Eigen::Index i = 0; i < s.observation.size(); ++i) {
             std::fprintf(csv.file, ",%.9g", s.observation[i]);
           }

@@ -12,8 +12,8 @@ namespace tendril::hardware {
 
 struct DeployOptions {
   int episodes = 1;
-  int max_steps = 0;  // per episode; 0: until the environment ends the episode
-  uint64_t seed = 0;  // episode k resets with seed + k
+  int max_steps = 0;          // per episode; 0: until the environment ends the episode
+  uint64_t seed = 0;          // episode k resets with seed + k
   std::filesystem::path csv;  // one row per step (appended as it happens); empty: none
   const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT): stop after this step
 };

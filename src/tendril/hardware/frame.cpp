@@ -32,7 +32,8 @@ std::vector<uint8_t> Frame::encode() const {
   bytes.reserve(kHeaderBytes + payload.size() + 2);
   bytes.insert(bytes.end(), {kSync0, kSync1, kVersion, type, static_cast<uint8_t>(seq),
                              static_cast<uint8_t>(seq >> 8)});
-  for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<uint8_t>(stamp_ms >> shift));
+  for (int shift = 0; shift < 32; shift += 8)
+    bytes.push_back(static_cast<uint8_t>(stamp_ms >> shift));
   bytes.push_back(static_cast<uint8_t>(payload.size()));
   bytes.push_back(crc8(std::span(bytes).subspan(2)));
   bytes.insert(bytes.end(), payload.begin(), payload.end());

@@ -10,8 +10,8 @@ namespace tendril::hardware {
 //   A5 5A | version | type | seq (u16) | stamp_ms (u32) | length n | CRC-8 | payload (n) | CRC-16
 // little-endian throughout. The CRC-8 (poly 0x07, init 0) covers version through length, so a
 // corrupted length is caught before the receiver waits for its bytes; the CRC-16/CCITT-FALSE
-// (poly 0x1021, init 0xFFFF) covers version through payload. A sender numbers its frames 0, 1, 2, … (wrapping at 65536) and stamps them
-// with its own clock in milliseconds.
+// (poly 0x1021, init 0xFFFF) covers version through payload. A sender numbers its frames 0, 1, 2, …
+// (wrapping at 65536) and stamps them with its own clock in milliseconds.
 struct Frame {
   static constexpr uint8_t kSync0 = 0xA5;
   static constexpr uint8_t kSync1 = 0x5A;

@@ -17,7 +17,7 @@ namespace tendril::hardware {
 class FrameParser {
  public:
   struct Counters {
-    uint64_t frames = 0;         // accepted
+    uint64_t frames = 0;  // accepted
     uint64_t checksum_errors = 0;
     uint64_t version_errors = 0;
     uint64_t length_errors = 0;

@@ -83,9 +83,9 @@ void LimbBridge::handshake() {
     if (!frame || frame->type != static_cast<uint8_t>(MessageType::kIdentity)) continue;
     Identity identity = Identity::decode(frame->payload);
     if (identity.robot != settings_.robot) {
-      throw Error("the robot on this port is '" + identity.robot + "', expected '" +
-                      settings_.robot + "'",
-                  port_name_);
+      throw Error(
+          "the robot on this port is '" + identity.robot + "', expected '" + settings_.robot + "'",
+          port_name_);
     }
     if (identity.protocol != Frame::kVersion) {
       throw Error("the robot speaks wire protocol " + std::to_string(identity.protocol) +
@@ -130,8 +130,8 @@ void LimbBridge::lost_link(const std::string& cause) {
                       "); it is back, the coils are off, and the episode must be reset",
                   port_name_);
     } catch (const LinkDown& again) {
-      log_.record("reconnect", "attempt " + std::to_string(attempt) + " failed: " +
-                                   again.what_wrong());
+      log_.record("reconnect",
+                  "attempt " + std::to_string(attempt) + " failed: " + again.what_wrong());
     }
   }
   throw LinkDown("the link was lost (" + cause + ") and did not come back after " +
@@ -187,8 +187,7 @@ void LimbBridge::handle_other(const Frame& frame) {
       const Status status = Status::decode(frame.payload);
       switch (static_cast<StatusCode>(status.code)) {
         case StatusCode::kWatchdog:
-          log_.record("firmware_watchdog", "no valid command for " +
-                                               std::to_string(status.detail) +
+          log_.record("firmware_watchdog", "no valid command for " + std::to_string(status.detail) +
                                                " ms: the robot switched its coils off");
           break;
         case StatusCode::kFrameError:
@@ -224,8 +223,8 @@ void LimbBridge::handle_other(const Frame& frame) {
 LimbBridgeSample LimbBridge::sample_of(const LimbReading& reading, const Frame& frame) {
   LimbBridgeSample sample;
   sample.time_s = 1e-3 * static_cast<double>(frame.stamp_ms);
-  sample.angles_deg = Eigen::Vector2d(reading.counts[0] * resolution_deg_,
-                                      reading.counts[1] * resolution_deg_);
+  sample.angles_deg =
+      Eigen::Vector2d(reading.counts[0] * resolution_deg_, reading.counts[1] * resolution_deg_);
   for (int i = 0; i < 4; ++i) sample.pwm[i] = reading.pwm[i];
   sample.flags = reading.flags;
   sample.index = reading.index;
@@ -255,8 +254,8 @@ LimbBridgeSample LimbBridge::reset(uint64_t seed) {
     if (!in_epoch_ && needs_reset_) log_.record("reset", "new episode after a fault");
     ResetRequest request{seed};
     const uint16_t seq = link_.send(MessageType::kReset, request.encode());
-    const auto deadline = Clock::now() + span_of(settings_.reading_timeout_s +
-                                                 settings_.handshake_timeout_s);
+    const auto deadline =
+        Clock::now() + span_of(settings_.reading_timeout_s + settings_.handshake_timeout_s);
     while (auto frame = link_.next(deadline)) {
       if (frame->type != static_cast<uint8_t>(MessageType::kLimbReading)) {
         handle_other(*frame);
@@ -279,8 +278,8 @@ LimbBridgeSample LimbBridge::reset(uint64_t seed) {
   } catch (const LinkDown& down) {
     lost_link(down.what_wrong());
   }
-  fail("stale_sensor", "no first reading within " +
-                           std::to_string(settings_.reading_timeout_s) + " s of RESET");
+  fail("stale_sensor",
+       "no first reading within " + std::to_string(settings_.reading_timeout_s) + " s of RESET");
 }
 
 std::array<int, 4> LimbBridge::limit(const std::array<int, 4>& pwm) {
@@ -298,8 +297,8 @@ std::array<int, 4> LimbBridge::limit(const std::array<int, 4>& pwm) {
     if (!settings_.clamp) {
       fail("refuse", "PWM " + pwm_text(pwm) + " above the limit " + std::to_string(max_pwm_));
     }
-    log_.record("clamp", "PWM " + pwm_text(pwm) + " clamped to " + pwm_text(limited) +
-                             " (limit " + std::to_string(max_pwm_) + ")");
+    log_.record("clamp", "PWM " + pwm_text(pwm) + " clamped to " + pwm_text(limited) + " (limit " +
+                             std::to_string(max_pwm_) + ")");
   }
   return limited;
 }

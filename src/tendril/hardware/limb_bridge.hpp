@@ -25,7 +25,7 @@ struct LimbBridgeSettings {
   // Commands closer together than 1 / max_rate_hz (wall clock) wait, logged; 0: no limit
   // (the sensor paces the limb anyway: one command per reading).
   double max_rate_hz = 0.0;
-  double ack_timeout_s = 0.1;      // no COMMAND_ACK by then: the command is sent again
+  double ack_timeout_s = 0.1;  // no COMMAND_ACK by then: the command is sent again
   int command_retries = 2;
   double reading_timeout_s = 0.5;  // no new reading by then: stale — safe command and Error
   int frozen_readings = 25;        // this many identical readings in a row: frozen (0: off)
@@ -47,8 +47,8 @@ struct LimbBridgeSample {
   uint32_t index = 0;
   int readings_missed = 0;  // lost on the wire before this one
   bool command_acked = true;
-  double latency_s = 0.0;   // the command's round trip (send → COMMAND_ACK)
-  double elapsed_s = 0.0;   // wall-clock time since reset
+  double latency_s = 0.0;  // the command's round trip (send → COMMAND_ACK)
+  double elapsed_s = 0.0;  // wall-clock time since reset
 };
 
 // The host side of the SMA limb's link (wire protocol v1): handshake, reset, one command per

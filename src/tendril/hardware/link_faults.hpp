@@ -16,9 +16,9 @@ namespace tendril::hardware {
 // a pulled cable (`disconnected`: every call fails; a reopen succeeds only once
 // `failed_reopens` attempts have failed). Counters say what was injected.
 struct LinkFaults {
-  double latency_s = 0.0;   // added to every received frame
-  double jitter_s = 0.0;    // plus uniform [0, jitter_s); order is kept
-  double drop_rate = 0.0;   // each received frame
+  double latency_s = 0.0;  // added to every received frame
+  double jitter_s = 0.0;   // plus uniform [0, jitter_s); order is kept
+  double drop_rate = 0.0;  // each received frame
   double corrupt_rate = 0.0;
   double send_drop_rate = 0.0;
   int drop_next_received = 0;  // deterministic: the next N received frames

@@ -7,45 +7,72 @@ namespace tendril::hardware {
 
 const char* message_name(uint8_t type) {
   switch (static_cast<MessageType>(type)) {
-    case MessageType::kHello: return "HELLO";
-    case MessageType::kReset: return "RESET";
-    case MessageType::kPwmCommand: return "PWM_COMMAND";
-    case MessageType::kEstop: return "ESTOP";
-    case MessageType::kPing: return "PING";
-    case MessageType::kClear: return "CLEAR";
-    case MessageType::kPressureCommand: return "PRESSURE_COMMAND";
-    case MessageType::kIdentity: return "IDENTITY";
-    case MessageType::kLimbReading: return "LIMB_READING";
-    case MessageType::kStatus: return "STATUS";
-    case MessageType::kRefused: return "REFUSED";
-    case MessageType::kPong: return "PONG";
-    case MessageType::kMocapFrame: return "MOCAP_FRAME";
-    case MessageType::kPressureReport: return "PRESSURE_REPORT";
-    case MessageType::kCommandAck: return "COMMAND_ACK";
+    case MessageType::kHello:
+      return "HELLO";
+    case MessageType::kReset:
+      return "RESET";
+    case MessageType::kPwmCommand:
+      return "PWM_COMMAND";
+    case MessageType::kEstop:
+      return "ESTOP";
+    case MessageType::kPing:
+      return "PING";
+    case MessageType::kClear:
+      return "CLEAR";
+    case MessageType::kPressureCommand:
+      return "PRESSURE_COMMAND";
+    case MessageType::kIdentity:
+      return "IDENTITY";
+    case MessageType::kLimbReading:
+      return "LIMB_READING";
+    case MessageType::kStatus:
+      return "STATUS";
+    case MessageType::kRefused:
+      return "REFUSED";
+    case MessageType::kPong:
+      return "PONG";
+    case MessageType::kMocapFrame:
+      return "MOCAP_FRAME";
+    case MessageType::kPressureReport:
+      return "PRESSURE_REPORT";
+    case MessageType::kCommandAck:
+      return "COMMAND_ACK";
   }
   return "unknown";
 }
 
 const char* status_name(uint8_t code) {
   switch (static_cast<StatusCode>(code)) {
-    case StatusCode::kBoot: return "boot";
-    case StatusCode::kWatchdog: return "watchdog";
-    case StatusCode::kEstop: return "estop";
-    case StatusCode::kCleared: return "cleared";
-    case StatusCode::kFrameError: return "frame_error";
-    case StatusCode::kSensorFault: return "sensor_fault";
-    case StatusCode::kReset: return "reset";
+    case StatusCode::kBoot:
+      return "boot";
+    case StatusCode::kWatchdog:
+      return "watchdog";
+    case StatusCode::kEstop:
+      return "estop";
+    case StatusCode::kCleared:
+      return "cleared";
+    case StatusCode::kFrameError:
+      return "frame_error";
+    case StatusCode::kSensorFault:
+      return "sensor_fault";
+    case StatusCode::kReset:
+      return "reset";
   }
   return "unknown";
 }
 
 const char* refuse_name(uint8_t reason) {
   switch (static_cast<RefuseReason>(reason)) {
-    case RefuseReason::kLength: return "wrong payload length";
-    case RefuseReason::kPair: return "both coils of a pair on";
-    case RefuseReason::kLimit: return "duty above the firmware's max_pwm";
-    case RefuseReason::kEstop: return "emergency stop active";
-    case RefuseReason::kUnknown: return "unknown message type";
+    case RefuseReason::kLength:
+      return "wrong payload length";
+    case RefuseReason::kPair:
+      return "both coils of a pair on";
+    case RefuseReason::kLimit:
+      return "duty above the firmware's max_pwm";
+    case RefuseReason::kEstop:
+      return "emergency stop active";
+    case RefuseReason::kUnknown:
+      return "unknown message type";
   }
   return "unknown reason";
 }

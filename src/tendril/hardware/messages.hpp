@@ -70,10 +70,10 @@ struct PwmCommand {
 // LIMB_READING: one bend-sensor reading (frame stamp = its time, ms since the epoch began).
 struct LimbReading {
   static constexpr uint8_t kCutoff = 0x01, kWatchdog = 0x02, kEstop = 0x04, kSensorFault = 0x08;
-  uint16_t reset_seq = kNoSeq;  // the host's RESET frame that began this epoch
-  uint32_t index = 0;           // 0 for the epoch's first reading
-  uint16_t acked_seq = kNoSeq;  // the last PWM_COMMAND applied
-  std::array<int16_t, 2> counts{0, 0};  // θx, θy in sensor counts (identity: resolution_mdeg)
+  uint16_t reset_seq = kNoSeq;             // the host's RESET frame that began this epoch
+  uint32_t index = 0;                      // 0 for the epoch's first reading
+  uint16_t acked_seq = kNoSeq;             // the last PWM_COMMAND applied
+  std::array<int16_t, 2> counts{0, 0};     // θx, θy in sensor counts (identity: resolution_mdeg)
   std::array<uint8_t, 4> pwm{0, 0, 0, 0};  // driven when the reading was sent
   uint8_t flags = 0;
   std::vector<uint8_t> encode() const;

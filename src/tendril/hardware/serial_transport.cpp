@@ -14,14 +14,22 @@ namespace {
 
 speed_t speed_of(int baud, const std::string& where) {
   switch (baud) {
-    case 9600: return B9600;
-    case 19200: return B19200;
-    case 38400: return B38400;
-    case 57600: return B57600;
-    case 115200: return B115200;
-    case 230400: return B230400;
-    case 460800: return B460800;
-    case 921600: return B921600;
+    case 9600:
+      return B9600;
+    case 19200:
+      return B19200;
+    case 38400:
+      return B38400;
+    case 57600:
+      return B57600;
+    case 115200:
+      return B115200;
+    case 230400:
+      return B230400;
+    case 460800:
+      return B460800;
+    case 921600:
+      return B921600;
   }
   throw Error("unsupported baud rate " + std::to_string(baud) +
                   " (9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600)",
@@ -39,7 +47,8 @@ SerialTransport::~SerialTransport() { close_port(); }
 
 void SerialTransport::open_port() {
   fd_ = ::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-  if (fd_ < 0) throw LinkDown(std::string("cannot open serial port: ") + std::strerror(errno), path_);
+  if (fd_ < 0)
+    throw LinkDown(std::string("cannot open serial port: ") + std::strerror(errno), path_);
   termios tio{};
   if (tcgetattr(fd_, &tio) != 0) {
     close_port();

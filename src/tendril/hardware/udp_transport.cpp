@@ -46,7 +46,8 @@ UdpTransport::~UdpTransport() {
 
 void UdpTransport::open_socket() {
   fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  if (fd_ < 0) throw LinkDown(std::string("cannot open a UDP socket: ") + std::strerror(errno), name());
+  if (fd_ < 0)
+    throw LinkDown(std::string("cannot open a UDP socket: ") + std::strerror(errno), name());
   const int yes = 1;
   setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   sockaddr_in local = address_of(bind_host_, local_port_, "udp bind");

@@ -27,16 +27,16 @@ std::unique_ptr<Env> BridgeRobotEnv::create(const Config& params) {
   const double samples = period / kSamplePeriod;
   if (!(std::isfinite(period) && samples >= 1.0 - 1e-9 &&
         std::abs(samples - std::round(samples)) < 1e-6)) {
-    throw Error("must be a positive whole number of 10 ms capture samples, got " +
-                    std::to_string(period),
-                params.where("control_period_s"));
+    throw Error(
+        "must be a positive whole number of 10 ms capture samples, got " + std::to_string(period),
+        params.where("control_period_s"));
   }
   const Config bridge = params.child("bridge");
   auto commands = std::make_unique<hardware::UdpTransport>(
       "127.0.0.1", bridge.get_or<int>("local_port", 0),
       bridge.get_or<std::string>("udp_host", "127.0.0.1"), bridge.get<int>("udp_port"));
-  auto mocap = std::make_unique<hardware::UdpTransport>("127.0.0.1", bridge.get<int>("mocap_port"),
-                                                        "", 0);
+  auto mocap =
+      std::make_unique<hardware::UdpTransport>("127.0.0.1", bridge.get<int>("mocap_port"), "", 0);
   auto arm = std::make_unique<hardware::ArmBridge>(
       hardware::with_faults(std::move(commands), bridge.child("faults")),
       hardware::with_faults(std::move(mocap), bridge.child("mocap_faults")),
@@ -47,8 +47,7 @@ std::unique_ptr<Env> BridgeRobotEnv::create(const Config& params) {
   return std::make_unique<BridgeRobotEnv>(std::move(arm), observe_pressures);
 }
 
-BridgeRobotEnv::BridgeRobotEnv(std::unique_ptr<hardware::ArmBridge> bridge,
-                               bool observe_pressures)
+BridgeRobotEnv::BridgeRobotEnv(std::unique_ptr<hardware::ArmBridge> bridge, bool observe_pressures)
     : bridge_(std::move(bridge)),
       observe_pressures_(observe_pressures),
       observation_space_(Space::box(observe_pressures ? 2 * kChambers : kChambers,

@@ -7,9 +7,9 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <cstdio>
 #include <deque>
 
 #include "tendril/core/error.hpp"
@@ -57,8 +57,8 @@ struct LimbEmulator::Impl {
   avr_irq_t* drdy = nullptr;
   avr_irq_t* twi_irqs = nullptr;
   bool xon = true;
-  std::deque<uint8_t> to_robot;    // from the pty, not yet in the UART
-  std::vector<uint8_t> to_host;    // from the UART, not yet in the pty
+  std::deque<uint8_t> to_robot;  // from the pty, not yet in the UART
+  std::vector<uint8_t> to_host;  // from the UART, not yet in the pty
   FrameParser host_frames, robot_frames;
 
   // The twin and its sensor.
@@ -307,8 +307,9 @@ struct LimbEmulator::Impl {
     run_slice();
     service_pty(0);
     if (settings.pace == EmulatorPace::kRealtime || !host_present) {
-      const auto due = pace_wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                       std::chrono::duration<double>(seconds(avr->cycle - pace_cycle)));
+      const auto due =
+          pace_wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                          std::chrono::duration<double>(seconds(avr->cycle - pace_cycle)));
       const auto now = std::chrono::steady_clock::now();
       if (due > now + std::chrono::microseconds(200)) {
         // Wait for the wall clock, listening to the host meanwhile.

@@ -16,12 +16,11 @@
 
 namespace tendril::hardware {
 
-
 struct LimbEmulatorSettings {
   std::filesystem::path firmware;  // the firmware's ELF (build/firmware/sma_limb.elf)
   std::string link;                // a symlink to the pseudo-terminal (empty: none)
   physics::SmaLimbSpec spec = physics::SmaLimbSpec::stiff();
-  uint64_t seed = 0;               // the twin's until the host's first RESET
+  uint64_t seed = 0;  // the twin's until the host's first RESET
   EmulatorPace pace = EmulatorPace::kLockstep;
   double host_wait_s = 5.0;
 };
