@@ -94,6 +94,9 @@ std::vector<CommandSpec> command_table() {
       .set_help = "Change the run's experiment for this, e.g. --set env.params.tip_mass=0.05: a "
                   "policy on conditions it was not trained on.",
       .examples = {"tendril run runs/ppo_pendulum-20261127-101500 --episodes 20",
+                   "tendril run runs/limb_policy --set env.params.backend=bridge "
+                   "--set env.params.bridge.port=/dev/ttyACM0 --filter runs/limb_safety "
+                   "--epsilon 90",
                    "tendril run runs/ur5 --episodes 5 --trace ur5.csv",
                    "tendril run runs/arm --record runs/arm/episodes --episodes 2"},
       .run = run_command,
@@ -434,6 +437,44 @@ std::vector<CommandSpec> command_table() {
       .run = plot_command,
   });
 #ifdef TENDRIL_WITH_ENVS
+  table.push_back({
+      .words = {"robot", "emulate"},
+      .positionals = "limb|arm",
+      .min_positionals = 1,
+      .max_positionals = 1,
+      .summary = "Emulate a robot's hardware on this machine: the SMA limb's firmware in simavr "
+                 "on a pseudo-terminal, or the pneumatic arm's lab on UDP (docs/hardware.md).",
+      .description = "Everything tendril does with a robot (`backend: bridge`) then runs against "
+                     "it as against the real one. Ctrl-C stops it.",
+      .options = {{"link", "PATH", "Limb: the pseudo-terminal's link (default /tmp/tendril-limb)."},
+                  {"limb", "stiff|soft", "Limb: which twin (default stiff)."},
+                  {"firmware", "ELF", "Limb: the firmware image (default: the one built)."},
+                  seed_option("Limb: the twin's seed (default 0)."),
+                  {"command-port", "P", "Arm: the regulators' UDP port (default 51000)."},
+                  {"mocap-port", "P", "Arm: where the motion capture streams (default 51001)."},
+                  {"pace", "realtime|lockstep", "Real time (default), or robot time paused while "
+                                                "the host answers (tests)."}},
+      .takes_set = true,
+      .set_help = "Arm: a parameter of PneumaticArm/Robot-v0's twin.",
+      .examples = {"tendril robot emulate limb --link /tmp/limb"},
+      .run = robot_emulate_command,
+  });
+  table.push_back({
+      .words = {"robot", "check"},
+      .positionals = "limb|arm",
+      .min_positionals = 1,
+      .max_positionals = 1,
+      .summary = "Check a robot link: handshake, round-trip latency, sensor and control rates, "
+                 "limits.",
+      .options = {{"port", "DEVICE", "Limb: the serial device (or an emulator's link)."},
+                  {"baud", "B", "Limb: the baud rate (default 115200)."},
+                  {"udp-port", "P", "Arm: the regulators' UDP port (default 51000)."},
+                  {"mocap-port", "P", "Arm: the motion capture's port (default 51001)."},
+                  {"pings", "N", "Round trips to time (default 50)."},
+                  {"steps", "N", "Steps of zero command to time (default 100)."}},
+      .examples = {"tendril robot check limb --port /tmp/limb"},
+      .run = robot_check_command,
+  });
   table.push_back({
       .words = {"list", "envs"},
       .summary = "The registered environment ids, their time limits and what they are.",

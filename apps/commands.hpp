@@ -34,6 +34,8 @@ int plot_command(const Arguments& line);
 int list_envs_command(const Arguments& line);
 int list_algorithms_command(const Arguments& line);
 int list_wrappers_command(const Arguments& line);
+int robot_emulate_command(const Arguments& line);
+int robot_check_command(const Arguments& line);
 
 // Safety co-training (an experiment's `safety:` section) and the constrained baselines
 // (`constrained:`), which `train` hands over.

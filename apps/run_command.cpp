@@ -14,11 +14,16 @@
 #include "run_policy.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/runner/episode_files.hpp"
 #include "tendril/envs/runner/step_statistics.hpp"
 #include "tendril/envs/runner/trace_writer.hpp"
 #include "tendril/rl/open_loop.hpp"
+#ifdef TENDRIL_WITH_SAFETY
+#include "tendril/safety/filtered_policy.hpp"
+#include "tendril/safety/safety_critic.hpp"
+#endif
 
 namespace tendril::apps {
 
@@ -135,6 +140,10 @@ int run_command(const Arguments& line) {
   settings.episodes = settings.steps > 0 ? 0 : line.integer("episodes", 10, 1, kMost);
   settings.seed = line.unsigned_integer("seed", 0);
   settings.deterministic = !line.has("stochastic");
+  // Ctrl-C (or SIGTERM) ends the run after the current step, with its summary; on a robot the
+  // bridge then holds it safe.
+  catch_interrupts();
+  settings.stop_requested = [] { return interrupt_signal() != 0; };
 
   const fs::path source = line.positional.front();
   const bool policy_file = fs::is_regular_file(source);
@@ -175,11 +184,30 @@ int run_command(const Arguments& line) {
   if (trace) observers.push_back(&*trace);
   if (recording) observers.push_back(&*recording);
 
+  // The safety filter (seed 001 eq. 6.5) as a policy around the trained one.
+  const Policy* policy = opened.policy.get();
+#ifdef TENDRIL_WITH_SAFETY
+  std::unique_ptr<safety::SafetyCritic> critic;
+  std::unique_ptr<safety::FilteredPolicy> filtered;
+  if (line.has("filter")) {
+    require(line.has("epsilon"), "the filter needs its threshold: --epsilon E", "--filter");
+    fs::path critic_file = line.value("filter");
+    if (fs::is_directory(critic_file)) critic_file /= "safety.critic";
+    critic = safety::load_safety_critic(critic_file);
+    filtered = std::make_unique<safety::FilteredPolicy>(
+        *policy, *critic, line.number("epsilon", 0.0, -1e300, 1e300));
+    policy = filtered.get();
+  }
+#else
+  require(!line.has("filter"), "this build has no safety layer", "--filter");
+#endif
   envs::RunResult result;
   std::string how = settings.deterministic ? "deterministic" : "stochastic";
+  if (line.has("filter")) how += ", through the safety filter at epsilon_2 " + line.value("epsilon");
   if (line.has("open-loop")) {
-    require(settings.episodes > 0 && !trace && !recording,
-            "--open-loop replays whole episodes, without --trace or --record", "--open-loop");
+    require(settings.episodes > 0 && !trace && !recording && !line.has("filter"),
+            "--open-loop replays whole episodes, without --trace, --record or --filter",
+            "--open-loop");
     // The policy acts once in the run's own environment; its actions replay on this one.
     const RunPolicy trained = open_run_policy(source, line.has("best"));
     const std::vector<Action> actions =
@@ -188,10 +216,19 @@ int run_command(const Arguments& line) {
           trained.experiment.env.id + ", replayed";
     result = rl::replay_actions(actions, env, static_cast<int>(settings.episodes), settings.seed);
   } else {
-    result = envs::run_policy(*opened.policy, env, settings, observers);
+    result = envs::run_policy(*policy, env, settings, observers);
   }
   if (trace) trace->close();
   print_summary(result, steps, opened.source.string(), opened.experiment.env.id, how);
+  if (result.stopped) std::printf("stopped by %s\n", signal_name(interrupt_signal()));
+#ifdef TENDRIL_WITH_SAFETY
+  if (filtered) {
+    std::printf("safety filter: %lld interventions in %lld steps (%.3f)\n",
+                static_cast<long long>(filtered->filter().interventions()),
+                static_cast<long long>(filtered->filter().decisions()),
+                filtered->filter().intervention_rate());
+  }
+#endif
   if (recording) {
     for (const auto& episode : recording->episodes()) {
       std::printf("recorded %s (%lld steps)\n", episode.file.c_str(),

@@ -7,6 +7,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
 #include "tendril/envs/pneumatic/arm_params.hpp"
+#include "tendril/envs/pneumatic/bridge_robot_env.hpp"
 
 namespace tendril::envs::pneumatic {
 
@@ -21,6 +22,12 @@ constexpr double kMillimetresPerMetre = 1000.0;
 }  // namespace
 
 std::unique_ptr<Env> RobotEnv::create(const Config& params) {
+  // The arm behind the interface: the twin, or the bridge to the lab's devices (`bridge:`).
+  const std::string backend = params.get_or<std::string>("backend", "twin");
+  if (backend == "bridge") return BridgeRobotEnv::create(params);
+  if (backend != "twin") {
+    throw Error("backend must be twin or bridge, got '" + backend + "'", params.where("backend"));
+  }
   const physics::pneumatic::PneumaticArmSpec spec = arm_spec_from(params);
   const double period = params.get_or<double>("control_period_s", 0.1);
   const bool observe_pressures = params.get_or<bool>("observe_pressures", false);

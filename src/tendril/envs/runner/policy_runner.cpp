@@ -92,7 +92,7 @@ RunResult run_policy(const Policy& policy, Env& env, const RunSettings& settings
       observer->on_episode_start(k, outcome.seed, observation, env);
     }
     while (true) {
-      if (settings.steps > 0 && result.steps == settings.steps) {
+      if ((settings.steps > 0 && result.steps == settings.steps) || result.stopped) {
         outcome.finished = false;
         break;
       }
@@ -104,6 +104,7 @@ RunResult run_policy(const Policy& policy, Env& env, const RunSettings& settings
         observer->on_step({k, outcome.length, observation, action, step, env});
       }
       ++outcome.length;
+      if (settings.stop_requested && settings.stop_requested()) result.stopped = true;
       if (step.terminated || step.truncated) {
         outcome.terminated = step.terminated;
         outcome.truncated = step.truncated;
@@ -113,7 +114,8 @@ RunResult run_policy(const Policy& policy, Env& env, const RunSettings& settings
       observation = step.observation;
     }
     for (RunObserver* observer : observers) observer->on_episode_end(outcome);
-    const bool budget_used = settings.steps > 0 && result.steps == settings.steps;
+    const bool budget_used =
+        (settings.steps > 0 && result.steps == settings.steps) || result.stopped;
     if (outcome.length > 0 || outcome.finished) result.episodes.push_back(std::move(outcome));
     if (budget_used) break;
   }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct RunSettings {
   // `seed`.
   uint64_t seed = 0;
   bool deterministic = true;  // the policy's mode; false samples
+  // Stop politely after the current step when it returns true (a caught Ctrl-C): the episode
+  // running then counts as cut short.
+  std::function<bool()> stop_requested;
 };
 
 // One episode of a run: its index k (reset with seed + k), return, length and how it ended.
@@ -57,6 +61,7 @@ class RunObserver {
 struct RunResult {
   std::vector<EpisodeOutcome> episodes;  // in index order; a cut-short last one included
   int64_t steps = 0;
+  bool stopped = false;  // by RunSettings::stop_requested
 
   // Over the finished episodes.
   int64_t finished_episodes() const;

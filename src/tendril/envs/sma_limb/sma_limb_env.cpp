@@ -5,6 +5,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
+#include "tendril/envs/sma_limb/bridge_limb_robot.hpp"
 #include "tendril/envs/sma_limb/twin_limb_robot.hpp"
 
 namespace tendril::envs::sma_limb {
@@ -48,6 +49,15 @@ std::unique_ptr<Env> SmaLimbEnv::create(const Config& params) {
       throw Error("calibration was made on limb '" + calibration.limb + "', not '" + limb + "'",
                   file);
     }
+  }
+  // The robot behind the interface: the twin, or the bridge to the firmware (a real limb or
+  // the firmware in its emulator; `bridge:` names the link and the safety settings).
+  const std::string backend = params.get_or<std::string>("backend", "twin");
+  if (backend == "bridge") {
+    return make_bridge_limb_env(params.child("bridge"), std::move(calibration), seed);
+  }
+  if (backend != "twin") {
+    throw Error("backend must be twin or bridge, got '" + backend + "'", params.where("backend"));
   }
   spec.validate();
   return std::make_unique<SmaLimbEnv>(std::make_unique<TwinLimbRobot>(spec), std::move(calibration),

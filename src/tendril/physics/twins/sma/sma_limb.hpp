@@ -40,6 +40,9 @@ class SmaLimb {
   // non-finite, readings are NaN and the limb no longer advances.
   BendReading next_reading();
   const BendReading& last_reading() const { return last_reading_; }
+  // When the next reading is due (ms of the limb's clock): what an emulated sensor needs to
+  // raise its data-ready line at the right moment.
+  int64_t next_reading_ms() const { return sensor_->next_sample_ms(); }
   bool finite() const { return finite_; }
   // Pushes the tip with `force` (lab frame, N) for `duration` seconds from now.
   void push(const Eigen::Vector3d& force, double duration);
