@@ -84,7 +84,9 @@ Arguments Arguments::parse(const CommandSpec& command, const std::vector<std::st
         if (equals_sign == std::string::npos || equals_sign == 0) {
           usage("--set expects key=value, got '" + shown(assignment) + "'");
         }
-        if (assignment.size() > Config::kMaxValueBytes) usage("--set: value too long");
+        if (assignment.size() > Config::kMaxValueBytes)
+          usage("--set: value too long (at most " + std::to_string(Config::kMaxValueBytes) +
+                " characters)");
         parsed.overrides.emplace_back(assignment.substr(0, equals_sign),
                                       assignment.substr(equals_sign + 1));
         continue;
@@ -119,7 +121,9 @@ Arguments Arguments::parse(const CommandSpec& command, const std::vector<std::st
       value = args[++i];
     }
     if (value.empty()) usage("--" + option->name + " needs a value (" + option->value + ")");
-    if (value.size() > Config::kMaxValueBytes) usage("--" + option->name + ": value too long");
+    if (value.size() > Config::kMaxValueBytes)
+      usage("--" + option->name + ": value too long (at most " +
+            std::to_string(Config::kMaxValueBytes) + " characters)");
     parsed.options_.emplace_back(option->name, value);
   }
   const int count = static_cast<int>(parsed.positional.size());

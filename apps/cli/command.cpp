@@ -161,9 +161,9 @@ std::string program_help(const std::vector<CommandSpec>& table) {
     const std::string name = command.name();
     // The summary wrapped beside the names.
     const std::string summary = wrapped(command.summary, width + 4);
-    text += "  " + name + summary.substr(2 + name.size());
+    text += "  " + name + (summary.empty() ? "\n" : summary.substr(2 + name.size()));
   }
-  text += "\n  --version" + std::string(width - 7, ' ') +
+  text += "\n  --version" + std::string(std::max<std::size_t>(width, 9) - 7, ' ') +
           "The version, and how floating-point results reproduce (docs/reproducibility.md)\n";
   return text;
 }

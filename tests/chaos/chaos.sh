@@ -295,7 +295,7 @@ inputs)
   expect_error "is a directory" "$T" train adir -o o2
   head -c 3000000 /dev/zero | tr '\0' '#' >big.yaml
   expect_error "larger than 1 MiB" "$T" train big.yaml -o o3
-  expect_error "at most 65536" "$T" train "$PPO" --set "seed=$(head -c 100000 /dev/zero | tr '\0' 1)" -o o4
+  expect_usage_error "at most 65536" "$T" train "$PPO" --set "seed=$(head -c 100000 /dev/zero | tr '\0' 1)" -o o4
   expect_error "algo.buffer_size" "$T" train "$CONFIGS/sac/pendulum.yaml" --set algo.buffer_size=1000000000000 -o o5
   expect_error "65536 units" "$T" train "$CONFIGS/sac/pendulum.yaml" --set "algo.net_arch=[100000,100000]" -o o6
   expect_error "learner_threads" "$T" train "$CONFIGS/sac/pendulum.yaml" --set algo.learner_threads=1000 -o o7
