@@ -24,6 +24,7 @@ int dynamics_command(const std::vector<std::string>& args);
 int rollout_command(const std::vector<std::string>& args);
 int track_command(const std::vector<std::string>& args);
 int safety_command(const std::vector<std::string>& args);
+int export_command(const std::vector<std::string>& args);
 
 // "SIGINT", "SIGTERM": how the interruption of a run is reported.
 const char* signal_name(int signal);

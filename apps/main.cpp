@@ -72,6 +72,10 @@ commands:
   record <run-dir> [--episodes N] [--best] [--out DIR] [--seed S] [--deterministic|--stochastic]
       Record episodes of a run's model (as eval picks it) into <run-dir>/episodes/ (or DIR):
       the scene of every step, actions, rewards, info (docs/episode_format.md).
+  export <run-dir|file.policy> [--c FILE.h [--name NAME]] [--onnx FILE.onnx] [--best]
+      A run's policy for other runtimes: a dependency-free C header (float weights and
+      NAME_act(observation, action), normalization and action scaling included; compiles for
+      an ATmega328P) and/or an ONNX model; both give the policy's deterministic action.
   serve <dir> [--port P] [--host H]
       The dashboard of the runs under DIR at http://127.0.0.1:8050/: learning curves that
       follow training, seeds side by side, configs, 3D replays of recorded episodes.
@@ -151,6 +155,7 @@ int main(int argc, char** argv) {
     if (args[0] == "summarize") return tendril::apps::summarize_command(rest);
     if (args[0] == "record") return tendril::apps::record_command(rest);
     if (args[0] == "rollout") return tendril::apps::rollout_command(rest);
+    if (args[0] == "export") return tendril::apps::export_command(rest);
 #endif
 #ifdef TENDRIL_WITH_ADAPT
     if (args[0] == "adapt") return tendril::apps::adapt_command(rest);

@@ -12,4 +12,5 @@ PYBIND11_MODULE(_tendril, m) {
   tendril::python::bind_vec_env(m);
   tendril::python::bind_policy(m);
   tendril::python::bind_train(m);
+  tendril::python::bind_render(m);
 }

@@ -71,13 +71,14 @@ std::string probe(const fs::path& file, const std::string& entry) {
   return out;
 }
 
-// 2 s at 100 steps per second, capped at 30 fps: 61 frames (0 s, 1/30 s, …, 2 s) of 320 × 240
-// in H.264; the duration is 61 / 30 s.
+// In real time (speed 1), 2 s at 100 steps per second, capped at 30 fps: 61 frames (0 s, 1/30 s,
+// …, 2 s) of 320 × 240 in H.264.
 TEST_F(EpisodeVideo, Mp4IsReadableWithTheEpisodesTiming) {
   const fs::path file = directory_ / "arm.mp4";
   VideoOptions options;
   options.raster.width = 320;
   options.raster.height = 240;
+  options.speed = 1.0;
   options.ffmpeg = TENDRIL_FFMPEG;
   EXPECT_EQ(write_episode_video(bending_arm(), file, options), 61);
   ASSERT_TRUE(fs::exists(file));
@@ -102,6 +103,19 @@ TEST_F(EpisodeVideo, SpeedAndFrameRateChooseTheFrames) {
   options.ffmpeg = TENDRIL_FFMPEG;
   EXPECT_EQ(write_episode_video(bending_arm(), directory_ / "slow.gif", options), 41);
   EXPECT_EQ(probe(directory_ / "slow.gif", "nb_read_frames"), "41");
+}
+
+// By default every step is a frame: 201 frames at 30 fps (the recording's 100 Hz is faster than
+// 30, so the video plays in slow motion).
+TEST_F(EpisodeVideo, DefaultShowsEveryStep) {
+  VideoOptions options;
+  options.raster.width = 160;
+  options.raster.height = 120;
+  options.raster.supersample = 1;
+  options.ffmpeg = TENDRIL_FFMPEG;
+  EXPECT_EQ(write_episode_video(bending_arm(), directory_ / "steps.mp4", options), 201);
+  EXPECT_EQ(probe(directory_ / "steps.mp4", "nb_read_frames"), "201");
+  EXPECT_EQ(probe(directory_ / "steps.mp4", "avg_frame_rate"), "30/1");
 }
 
 TEST_F(EpisodeVideo, NeverOverwritesAndRefusesBadRequests) {

@@ -81,6 +81,18 @@ Eigen::Vector3d Projection::to_view(const Eigen::Vector3d& direction) const {
   return {direction.dot(right_), direction.dot(up_), direction.dot(forward_)};
 }
 
+void Projection::ray(const Eigen::Vector2d& pixel, Eigen::Vector3d& origin,
+                     Eigen::Vector3d& direction) const {
+  const double x = (pixel.x() - centre_x_) / focal_, y = (centre_y_ - pixel.y()) / focal_;
+  if (orthographic_) {
+    origin = {x, y, 0.0};
+    direction = {0.0, 0.0, 1.0};
+  } else {
+    origin = Eigen::Vector3d::Zero();
+    direction = {x, y, 1.0};
+  }
+}
+
 Eigen::Vector3d detect_up(const Scene& scene) {
   if (scene.rods.empty() || scene.rods.front().centreline.cols() < 2)
     return Eigen::Vector3d::UnitZ();
@@ -123,12 +135,12 @@ View frame_scenes(const std::vector<const Scene*>& scenes, std::optional<Eigen::
   for (const auto& [centre, r] : balls)
     radius = std::max(radius, (centre - camera.target).norm() + r);
   // A three-quarter view from above (the dashboard's default camera) in which that sphere fills
-  // the view's height.
+  // the view's height, with a margin of a tenth.
   const Eigen::Vector3d direction =
       camera.up.z() > 0.5 ? Eigen::Vector3d(1.0, -1.4, 0.7) : Eigen::Vector3d(1.0, 0.7, 1.4);
-  const double distance = radius / std::sin(0.5 * fov_degrees * std::numbers::pi / 180.0);
+  const double distance = 1.1 * radius / std::sin(0.5 * fov_degrees * std::numbers::pi / 180.0);
   camera.eye = camera.target + distance * direction.normalized();
-  camera.height = 2.0 * radius;
+  camera.height = 2.2 * radius;
 
   // The floor: at the lab's zero height, or under the lowest point drawn.
   Floor& floor = view.floor;

@@ -38,6 +38,11 @@ class Projection {
   double depth(const Eigen::Vector3d& lab) const { return (lab - eye_).dot(forward_); }
   // A lab-frame direction in the camera's frame (x right, y up, z forward).
   Eigen::Vector3d to_view(const Eigen::Vector3d& direction) const;
+  // A lab-frame point in the camera's frame (the eye at the origin).
+  Eigen::Vector3d to_view_point(const Eigen::Vector3d& lab) const { return to_view(lab - eye_); }
+  // The ray through an image point, in the camera's frame: origin + s · direction, s ≥ 0, with
+  // direction's z component 1 (so s is the depth gained).
+  void ray(const Eigen::Vector2d& pixel, Eigen::Vector3d& origin, Eigen::Vector3d& direction) const;
   double near() const { return near_; }
 
  private:

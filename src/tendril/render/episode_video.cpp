@@ -72,7 +72,7 @@ int write_episode_video(const Episode& episode, const std::filesystem::path& fil
           "the episode's environment describes no scene to draw (" +
               episode.meta("env", "unknown environment") + ")",
           where);
-  require(options.speed > 0.0, "speed must be positive", where);
+  require(options.speed >= 0.0, "speed must be positive (or 0: one frame per step)", where);
   std::vector<const Scene*> scenes;
   for (const EpisodeFrame& frame : episode.frames) scenes.push_back(&frame.scene);
   const View view = frame_scenes(scenes);
@@ -82,10 +82,10 @@ int write_episode_video(const Episode& episode, const std::filesystem::path& fil
   const double start = episode.frames.front().scene.time;
   std::vector<std::size_t> shown;
   double fps = options.fps;
-  if (dt <= 0.0) {  // no clock: one video frame per step
-    if (fps <= 0.0) fps = options.max_fps;
+  if (options.speed <= 0.0 || dt <= 0.0) {  // one video frame per step
+    if (fps <= 0.0) fps = dt > 0.0 ? std::min(1.0 / dt, options.max_fps) : options.max_fps;
     for (std::size_t k = 0; k < episode.frames.size(); ++k) shown.push_back(k);
-  } else {
+  } else {  // frames picked by the episode's clock
     if (fps <= 0.0) fps = std::min(options.speed / dt, options.max_fps);
     const double duration = (episode.frames.back().scene.time - start) / options.speed;
     const auto count = static_cast<std::size_t>(std::floor(duration * fps + 1e-9)) + 1;
@@ -96,6 +96,7 @@ int write_episode_video(const Episode& episode, const std::filesystem::path& fil
       shown.push_back(k);
     }
   }
+  fps = std::clamp(fps, 1.0, 240.0);
 
   SceneRasterizer rasterizer(options.raster);
   VideoWriter video(file, options.raster.width, options.raster.height, fps, options.ffmpeg);

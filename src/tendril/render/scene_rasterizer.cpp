@@ -73,6 +73,59 @@ bool row_span(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double reach, 
   return x0 <= x1;
 }
 
+// Where a ray (origin + s · direction, camera frame) first meets a capsule of radius r around
+// the segment a–b (round ends when `capped`, flat ends otherwise): its s and the outward normal.
+bool hit_capsule(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                 const Eigen::Vector3d& a, const Eigen::Vector3d& b, double r, bool capped,
+                 double& nearest, Eigen::Vector3d& normal) {
+  nearest = std::numeric_limits<double>::infinity();
+  const auto take = [&](double s, const Eigen::Vector3d& n) {
+    if (s > 0.0 && s < nearest) {
+      nearest = s;
+      normal = n;
+    }
+  };
+  const auto sphere = [&](const Eigen::Vector3d& centre) {
+    const Eigen::Vector3d m = origin - centre;
+    const double aa = direction.squaredNorm(), bb = m.dot(direction), cc = m.squaredNorm() - r * r;
+    const double disc = bb * bb - aa * cc;
+    if (disc < 0.0) return;
+    const double s = (-bb - std::sqrt(disc)) / aa;
+    take(s, (origin + s * direction - centre) / r);
+  };
+  const Eigen::Vector3d axis = b - a;
+  const double length = axis.norm();
+  if (length < 1e-12) {
+    sphere(a);
+    return std::isfinite(nearest);
+  }
+  const Eigen::Vector3d u = axis / length;
+  const Eigen::Vector3d w = origin - a;
+  const Eigen::Vector3d dp = direction - direction.dot(u) * u, wp = w - w.dot(u) * u;
+  const double qa = dp.squaredNorm(), qb = 2.0 * wp.dot(dp), qc = wp.squaredNorm() - r * r;
+  if (qa > 1e-14) {
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc >= 0.0) {
+      const double s = (-qb - std::sqrt(disc)) / (2.0 * qa);
+      const Eigen::Vector3d point = origin + s * direction;
+      const double t = (point - a).dot(u);
+      if (t >= 0.0 && t <= length) take(s, (point - a - t * u) / r);
+    }
+  }
+  if (capped) {
+    sphere(a);
+    sphere(b);
+  } else {
+    for (const auto& [centre, n] : {std::pair{a, Eigen::Vector3d(-u)}, std::pair{b, u}}) {
+      const double facing = direction.dot(n);
+      if (std::abs(facing) < 1e-14) continue;
+      const double s = (centre - origin).dot(n) / facing;
+      if ((origin + s * direction - centre).squaredNorm() <= r * r) take(s, n);
+    }
+  }
+  return std::isfinite(nearest);
+}
+
 }  // namespace
 
 SceneRasterizer::SceneRasterizer(RasterOptions options) : options_(options) {
@@ -145,6 +198,26 @@ void SceneRasterizer::capsule(const Eigen::Vector3d& a, const Eigen::Vector3d& b
       height_ - 1, static_cast<int>(std::ceil(std::max(pa.pixel.y(), pb.pixel.y()) + extent)));
   const Eigen::Vector2d axis = pb.pixel - pa.pixel;
   const double length2 = axis.squaredNorm();
+  // Tubes a few pixels wide and more are ray-traced exactly (every sample's ray against the
+  // capsule in the camera's frame), so that consecutive segments join into one smooth tube;
+  // thinner ones, and tapered ones, are drawn as their projected silhouettes.
+  if (radius_a == radius_b && std::min(ra, rb) >= 1.5) {
+    const Eigen::Vector3d va = projection.to_view_point(start), vb = projection.to_view_point(end);
+    Eigen::Vector3d origin, direction, normal;
+    for (int y = y0; y <= y1; ++y) {
+      int x0 = 0, x1 = -1;
+      if (!row_span(pa.pixel, pb.pixel, 1.2 * extent + 1.0, y, width_, x0, x1)) continue;
+      for (int x = x0; x <= x1; ++x) {
+        projection.ray({x + 0.5, y + 0.5}, origin, direction);
+        double s = 0.0;
+        if (!hit_capsule(origin, direction, va, vb, radius_a, capped, s, normal)) continue;
+        if (normal.z() > 0.0) normal = -normal;  // a flat end seen from behind
+        put(x, y, static_cast<float>(origin.z() + s * direction.z()), shade(colour, normal),
+            opacity);
+      }
+    }
+    return;
+  }
   for (int y = y0; y <= y1; ++y) {
     int x0 = 0, x1 = -1;
     if (!row_span(pa.pixel, pb.pixel, extent, y, width_, x0, x1)) continue;

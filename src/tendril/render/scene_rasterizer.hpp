@@ -23,9 +23,9 @@ struct RasterOptions {
 // planes and the floor as grids of lines, lattices as nodes and springs, paths as lines;
 // coloured by role (role_colour), lit by a head light from the upper left, depth-tested, with
 // obstacles and walls translucent so that what is behind them shows. Deterministic: the same
-// scene and view give the same bytes. Tubes and spheres are shaded as seen straight on (their
-// screen-space silhouettes are exact for spheres and, for tubes, up to perspective across a
-// segment's width).
+// scene and view give the same bytes. Tubes and spheres a few pixels wide and more are
+// ray-traced exactly (each sample's ray against the capsule), so a rod's segments join into one
+// smooth tube; thinner ones are drawn as their projected silhouettes.
 //
 // Keeps its sample buffers between calls: one rasterizer draws one picture at a time.
 class SceneRasterizer {
