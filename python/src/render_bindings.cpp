@@ -100,7 +100,7 @@ void bind_render(py::module_& m) {
         return render::write_episode_video(read_episode(episode_file), out, options);
       },
       py::arg("episode"), py::arg("out"), py::arg("width") = 960, py::arg("height") = 540,
-      py::arg("fps") = 0.0, py::arg("max_fps") = 30.0, py::arg("speed") = 1.0,
+      py::arg("fps") = 0.0, py::arg("max_fps") = 30.0, py::arg("speed") = 0.0,
       py::arg("supersample") = 2, py::arg("trails") = true,
       "Writes a video of a recorded episode (.tep) with ffmpeg; returns its frame count.");
 

@@ -11,11 +11,26 @@ their export to C and ONNX) and the trainer.
 from ._tendril import Error
 from ._version import __version__
 from .env import TendrilEnv, gymnasium_id, make, register_with_gymnasium, registry
-from .export import export_c_header, export_onnx
 from .policy import Policy, load
 from .training import train
 from .vector import VecEnv, make_vec
 from .video import episode_video, record_video
+
+
+def export_c_header(policy, out, name="policy", best=False):
+    """The policy (a run directory or .policy file) as a dependency-free C header (docs/export.md;
+    tendril.export.export_c_header)."""
+    from .export import export_c_header as write
+
+    write(policy, out, name, best)
+
+
+def export_onnx(policy, out, best=False):
+    """The policy as an ONNX model, checked by onnx.checker (tendril.export.export_onnx)."""
+    from .export import export_onnx as write
+
+    write(policy, out, best)
+
 
 __all__ = ["Error", "Policy", "TendrilEnv", "VecEnv", "__version__", "episode_video",
            "export_c_header", "export_onnx", "gymnasium_id", "load", "make", "make_vec",

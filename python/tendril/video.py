@@ -1,7 +1,6 @@
 """Videos of environments: a policy's episodes as they are played now (record_video), or an
 episode recorded earlier by `tendril record` (episode_video). Frames come from tendril's
 software rasterizer; Debian's ffmpeg encodes them (.mp4, .webm or .gif)."""
-import math
 import os
 
 import numpy as np
@@ -27,13 +26,14 @@ def _acting(policy, deterministic):
 
 
 def record_video(env, policy, path, *, episodes=1, seed=0, deterministic=True, size=(640, 480),
-                 max_fps=30, max_steps=None):
+                 max_fps=30, every=1, max_steps=None):
     """Plays `episodes` episodes of `env` (an environment id or a TendrilEnv) with `policy` and
     writes them, one after the other, as the video `path`; returns the episodes' returns.
 
-    The video keeps the environment's time: at most `max_fps` frames per second, steps in
-    between are played but not drawn. Reset seeds are seed, seed + 1, ...; `max_steps` cuts
-    episodes short (the environment's own time limit applies anyway)."""
+    Every `every`-th step is a frame, shown at the environment's own rate up to `max_fps`
+    frames per second: real time for environments that step at most that often, slow motion
+    for faster ones (an Elastica arm steps every 1.4 ms). Reset seeds are seed, seed + 1, ...;
+    `max_steps` cuts episodes short (the environment's own time limit applies anyway)."""
     from .env import TendrilEnv, make
 
     owned = not isinstance(env, TendrilEnv)
@@ -49,22 +49,20 @@ def record_video(env, policy, path, *, episodes=1, seed=0, deterministic=True, s
             frames = [env.picture(width, height)]
             if frames[0] is None:
                 raise _tendril.Error(f"tendril env {env.env_id} describes no scene to draw")
-            total, steps, stride = 0.0, 0, 1
+            total, steps = 0.0, 0
             while True:
                 observation, reward, terminated, truncated, _ = env.step(act(observation))
                 total += float(reward)
                 steps += 1
                 if writer is None:
-                    # The first step tells the environment's clock: frames per second and how
-                    # many steps each frame stands for.
+                    # The first step tells the environment's clock, and so the frame rate.
                     seconds = env._native.step_seconds or 1.0 / max_fps
-                    stride = max(1, math.ceil(1.0 / seconds / max_fps))
-                    fps = 1.0 / (seconds * stride)
+                    fps = min(1.0 / (seconds * every), max_fps)
                     writer = _tendril.VideoWriter(os.fspath(path), width, height, fps)
                     for frame in frames:
                         writer.write(frame)
                     frames = []
-                if steps % stride == 0:
+                if steps % every == 0:
                     writer.write(env.picture(width, height))
                 if terminated or truncated or (max_steps is not None and steps >= max_steps):
                     break
@@ -76,11 +74,12 @@ def record_video(env, policy, path, *, episodes=1, seed=0, deterministic=True, s
     return np.asarray(returns)
 
 
-def episode_video(episode, path, *, size=(960, 540), fps=0.0, max_fps=30.0, speed=1.0,
+def episode_video(episode, path, *, size=(960, 540), speed=0.0, fps=0.0, max_fps=30.0,
                   trails=True):
     """Writes a video of a recorded episode file (.tep, `tendril record`): one fixed view of the
-    whole episode, the arm tip's and targets' paths drawn up to each moment; fps 0 keeps the
-    recording's rate up to max_fps. Returns the number of frames."""
+    whole episode, the arm tip's and targets' paths drawn up to each moment. speed 0: one frame
+    per step at the recording's rate up to max_fps (slow motion for fast environments); speed
+    > 0: that many episode seconds per video second. Returns the number of frames."""
     width, height = (int(v) for v in size)
     return _tendril.episode_video(os.fspath(episode), os.fspath(path), width, height, float(fps),
                                   float(max_fps), float(speed), 2, bool(trails))

@@ -89,10 +89,10 @@ def main(argv):
     e.add_argument("--video", action="store_true",
                    help="write a video of the episode instead (--out FILE.mp4, .webm or .gif): "
                         "the scene in 3D from one view, the tip's and targets' paths growing")
-    e.add_argument("--fps", type=float, default=0.0,
-                   help="video frames per second (default: the recording's rate, up to 30)")
-    e.add_argument("--speed", type=float, default=1.0,
-                   help="video: episode seconds per second of video")
+    e.add_argument("--speed", type=float, default=0.0,
+                   help="video: episode seconds per second of video (default 0: every step a "
+                        "frame, at the recording's rate up to 30 per second)")
+    e.add_argument("--fps", type=float, default=0.0, help="video: frames per second")
     e.add_argument("--resolution", type=resolution, default=(960, 540),
                    help="video: WIDTHxHEIGHT in pixels, both even (default 960x540)")
     common(e, (10.0, 5.6))
