@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/adapt/adapt_config.hpp"
 #include "tendril/adapt/boac.hpp"
@@ -116,13 +116,12 @@ int steps_for(const Config& gprca, const std::string& scenario) {
 
 }  // namespace
 
-int adapt_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"out"}, {});
+int adapt_command(const Arguments& line) {
   const Config config = line.load_config();
   const std::string method = config.get<std::string>("method");
   require(method == "gprca" || method == "boac", "must be gprca or boac, got '" + method + "'",
           config.where("method"));
-  const fs::path output = line.value("out", config.get_or<std::string>("output", ""));
+  const fs::path output = line.value("output", config.get_or<std::string>("output", ""));
   require(!output.empty(), "no output directory: set `output` or pass --out", config.source());
   const Config task = config.child("task");
   const Config robot = config.child("robot");
@@ -165,7 +164,7 @@ int adapt_command(const std::vector<std::string>& args) {
   }
 
   std::string invocation = "tendril adapt";
-  for (const std::string& arg : args) invocation += " " + arg;
+  for (const std::string& arg : line.raw) invocation += " " + arg;
   std::vector<RunSummary> summaries;
   for (const std::string& goal : goals) {
     const std::unique_ptr<rl::Policy> policy = load_trained_policy(policy_files.at(goal));

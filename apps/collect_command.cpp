@@ -1,4 +1,6 @@
-// `tendril collect`: calibrate the SMA limb, collect its data sets, replay open-loop inputs.
+// The SMA limb's data protocols (`tendril data ...`): calibrate it, collect its data sets,
+// replay open-loop inputs.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/arguments.hpp"
 #include "collect_support.hpp"
-#include "command_line.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/scene.hpp"
@@ -171,19 +173,25 @@ int collect_data(const Config& config, const std::string& task) {
 
 }  // namespace
 
-int collect_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {}, {});
+int limb_protocol(const Arguments& line, const std::vector<std::string>& tasks) {
   const Config config = line.load_config();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines appear as they are printed
   const std::string task = config.get<std::string>("task");
+  if (std::find(tasks.begin(), tasks.end(), task) == tasks.end()) {
+    std::string expected;
+    for (const std::string& t : tasks) expected += (expected.empty() ? "" : " or ") + t;
+    throw Error("the file describes a '" + task + "' protocol; this command runs " + expected +
+                    " (tendril data --help lists the protocols)",
+                where(config, "task"));
+  }
   if (task == "calibrate") return calibrate(config);
   if (task == "explore" || task == "babble") return collect_data(config, task);
   if (task == "replay") return collect::replay(config);
   if (task == "coverage") return collect::compare_coverage(config);
   if (task == "open_loop") return collect::open_loop(config);
-  throw Error("unknown task '" + task +
-                  "' (calibrate, explore, babble, replay, coverage, open_loop)",
-              where(config, "task"));
+  throw Error(
+      "unknown task '" + task + "' (calibrate, explore, babble, replay, coverage, open_loop)",
+      where(config, "task"));
 }
 
 }  // namespace tendril::apps

@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "collect_support.hpp"
+#include "tendril/core/data_table.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/snapshot.hpp"
 #include "tendril/data/prepare.hpp"
-#include "tendril/data/table.hpp"
 #include "tendril/envs/sma_limb/open_loop_inputs.hpp"
 
 namespace tendril::apps::collect {

@@ -7,8 +7,8 @@
 #include <string>
 
 #include "tendril/core/config.hpp"
+#include "tendril/core/data_table.hpp"
 #include "tendril/core/env.hpp"
-#include "tendril/data/table.hpp"
 #include "tendril/envs/sma_limb/collect.hpp"
 #include "tendril/envs/sma_limb/visit_grid.hpp"
 

@@ -1,30 +1,44 @@
 #pragma once
 
-#include <string>
-#include <vector>
+#include "cli/arguments.hpp"
+#include "tendril/core/config.hpp"
 
 namespace tendril::apps {
 
-// Each command takes the arguments after its name and returns the process exit code.
-int simulate_command(const std::vector<std::string>& args);
-int list_envs_command(const std::vector<std::string>& args);
-int collect_command(const std::vector<std::string>& args);
-int train_command(const std::vector<std::string>& args);
-int eval_command(const std::vector<std::string>& args);
-int sweep_command(const std::vector<std::string>& args);
-int summarize_command(const std::vector<std::string>& args);
-int pneumatic_collect_command(const std::vector<std::string>& args);
-int pneumatic_replay_command(const std::vector<std::string>& args);
-int pneumatic_prepare_command(const std::vector<std::string>& args);
-int adapt_command(const std::vector<std::string>& args);
-int serve_command(const std::vector<std::string>& args);
-int record_command(const std::vector<std::string>& args);
-int plot_command(const std::vector<std::string>& args);
-int dynamics_command(const std::vector<std::string>& args);
-int rollout_command(const std::vector<std::string>& args);
-int track_command(const std::vector<std::string>& args);
-int safety_command(const std::vector<std::string>& args);
-int export_command(const std::vector<std::string>& args);
+// The functions behind the command table (command_table.cpp); each returns the exit status.
+int train_command(const Arguments& line);
+int resume_command(const Arguments& line);
+int run_command(const Arguments& line);
+int sweep_run_command(const Arguments& line);
+int sweep_list_command(const Arguments& line);
+int sweep_summarize_command(const Arguments& line);
+int sweep_slurm_command(const Arguments& line);
+int report_command(const Arguments& line);
+int data_collect_command(const Arguments& line);
+int data_calibrate_command(const Arguments& line);
+int data_replay_command(const Arguments& line);
+int data_coverage_command(const Arguments& line);
+int data_open_loop_command(const Arguments& line);
+int data_prepare_command(const Arguments& line);
+int model_fit_command(const Arguments& line);
+int model_eval_command(const Arguments& line);
+int safety_eval_command(const Arguments& line);
+int safety_search_command(const Arguments& line);
+int safety_map_command(const Arguments& line);
+int safety_diamond_command(const Arguments& line);
+int adapt_command(const Arguments& line);
+int track_command(const Arguments& line);
+int simulate_command(const Arguments& line);
+int serve_command(const Arguments& line);
+int plot_command(const Arguments& line);
+int export_command(const Arguments& line);
+int list_envs_command(const Arguments& line);
+int list_algorithms_command(const Arguments& line);
+int list_wrappers_command(const Arguments& line);
+
+// Safety co-training (an experiment's `safety:` section) and the constrained baselines
+// (`constrained:`), which `train` hands over.
+int safety_train(const Arguments& line, const Config& config);
 
 // "SIGINT", "SIGTERM": how the interruption of a run is reported.
 const char* signal_name(int signal);

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
@@ -40,10 +40,11 @@ void print_evaluation(const std::vector<EvaluationRow>& rows) {
   }
 }
 
-int fit(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"out"}, {"quiet"});
+}  // namespace
+
+int model_fit_command(const Arguments& line) {
   const FitExperiment experiment = FitExperiment::from_config(line.load_config());
-  fs::path run = line.value("out", "");
+  fs::path run = line.value("output", "");
   if (run.empty()) {
     const std::time_t now = std::time(nullptr);
     char stamp[32];
@@ -75,20 +76,7 @@ int fit(const std::vector<std::string>& args) {
   return 0;
 }
 
-std::vector<double> parse_numbers(const std::string& text, const std::string& flag) {
-  std::vector<double> numbers;
-  std::stringstream cells(text);
-  std::string cell;
-  while (std::getline(cells, cell, ',')) {
-    try {
-      numbers.push_back(std::stod(cell));
-    } catch (const std::exception&) {
-      throw Error("--" + flag + " expects comma-separated numbers, got '" + text + "'",
-                  "command line");
-    }
-  }
-  return numbers;
-}
+namespace {
 
 const char* const kOpenLoopInputs[] = {"sine", "square", "sawtooth"};
 
@@ -124,19 +112,19 @@ void write_open_loop(Model& model, const SequenceData& data, const fs::path& dir
   }
 }
 
-int eval(const std::vector<std::string>& args) {
-  const CommandLine line =
-      CommandLine::parse(args, {"split", "horizons", "max-gap", "out", "open-loop"}, {});
+}  // namespace
+
+int model_eval_command(const Arguments& line) {
   require(line.positional.size() == 2, "expected a run directory (or model file) and a data set",
           "command line");
   // Refuse before the work, not after it: nothing is overwritten.
-  if (line.has("out")) {
-    require(!fs::exists(line.value("out", "")), "exists; nothing is overwritten",
-            line.value("out", ""));
+  if (line.has("output")) {
+    require(!fs::exists(line.value("output", "")), "exists; nothing is overwritten",
+            line.value("output", ""));
   }
-  if (line.has("open-loop")) {
+  if (line.has("open-loop-dir")) {
     for (const std::string kind : kOpenLoopInputs) {
-      const fs::path file = open_loop_file(line.value("open-loop", ""), kind);
+      const fs::path file = open_loop_file(line.value("open-loop-dir", ""), kind);
       require(!fs::exists(file), "exists; nothing is overwritten", file.string());
     }
   }
@@ -148,31 +136,21 @@ int eval(const std::vector<std::string>& args) {
   require(split_name == "test" || split_name == "train", "--split expects test or train",
           "command line");
   const Split split = split_name == "test" ? Split::kTest : Split::kTrain;
-  const std::vector<double> horizons = parse_numbers(line.value("horizons", "60,1800"), "horizons");
-  const double max_gap =
-      segment_gap(data, parse_numbers(line.value("max-gap", "0"), "max-gap").at(0));
+  std::vector<double> horizons = line.numbers("horizons", 1e-9, 1e9);
+  if (horizons.empty()) horizons = {60.0, 1800.0};
+  const double max_gap = segment_gap(data, line.number("max-gap", 0.0, 0.0, 1e9));
   std::printf("%s (%s, window %d) on the %s split of %s:\n",
               model_file_path(line.positional[0]).string().c_str(),
               architecture_name(model->spec().kind).c_str(), model->spec().window,
               split_name.c_str(), line.positional[1].c_str());
   const std::vector<EvaluationRow> rows = evaluate_model(*model, data, split, horizons, max_gap);
   print_evaluation(rows);
-  if (line.has("out")) {
-    write_evaluation_csv(rows, line.value("out", ""));
-    std::printf("errors -> %s\n", line.value("out", "").c_str());
+  if (line.has("output")) {
+    write_evaluation_csv(rows, line.value("output", ""));
+    std::printf("errors -> %s\n", line.value("output", "").c_str());
   }
-  if (line.has("open-loop")) write_open_loop(*model, data, line.value("open-loop", ""));
+  if (line.has("open-loop-dir")) write_open_loop(*model, data, line.value("open-loop-dir", ""));
   return 0;
-}
-
-}  // namespace
-
-int dynamics_command(const std::vector<std::string>& args) {
-  require(!args.empty(), "expected fit or eval after 'dynamics'", "command line");
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "fit") return fit(rest);
-  if (args[0] == "eval") return eval(rest);
-  throw Error("unknown dynamics command '" + args[0] + "' (expected fit or eval)", "command line");
 }
 
 }  // namespace tendril::apps

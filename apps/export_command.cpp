@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/rl/export/c_header.hpp"

@@ -13,7 +13,7 @@
 
 namespace tendril::apps {
 
-int plot_command(const std::vector<std::string>& args) {
+int plot_command(const Arguments& line) {
   // Debian's interpreter, which has python3-matplotlib (another python3 may come first on PATH).
   const char* python_override = std::getenv("TENDRIL_PYTHON");
   const std::string python = python_override != nullptr ? python_override : "/usr/bin/python3";
@@ -30,7 +30,7 @@ int plot_command(const std::vector<std::string>& args) {
   ::setenv("MPLBACKEND", "Agg", 1);  // files only, no display
 
   std::vector<std::string> words = {python, "-m", "tendril_plot"};
-  words.insert(words.end(), args.begin(), args.end());
+  words.insert(words.end(), line.raw.begin(), line.raw.end());
   std::vector<char*> argv;
   for (std::string& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);

@@ -1,24 +1,23 @@
-// `tendril collect-pneumatic`: the data protocol of seed 002 §III-C on the pneumatic arm.
+// `tendril data collect` on the pneumatic arm: the data protocol of seed 002 §III-C.
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/envs/pneumatic/collect_dataset.hpp"
 #include "tendril/envs/pneumatic/reach_task.hpp"
 
 namespace tendril::apps {
 
-int pneumatic_collect_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"out"}, {});
+int pneumatic_collect(const Arguments& line) {
   const Config config = line.load_config();
-  std::string invocation = "tendril collect-pneumatic";
-  for (const std::string& arg : args) invocation += " " + arg;
+  std::string invocation = "tendril data collect";
+  for (const std::string& arg : line.raw) invocation += " " + arg;
   const envs::pneumatic::CollectionReport report =
-      envs::pneumatic::collect_pneumatic_dataset(config, line.value("out", ""), invocation);
+      envs::pneumatic::collect_pneumatic_dataset(config, line.value("output", ""), invocation);
   const auto& tips = report.data.tips_mm;
-  std::printf("tendril collect-pneumatic: %d rows (%.1f s of robot time) in %.2f s of wall time\n",
+  std::printf("tendril data collect: %d rows (%.1f s of robot time) in %.2f s of wall time\n",
               report.rows,
               report.data.time_s[report.rows - 1] + (report.rows > 1 ? report.data.time_s[1] : 0.0),
               report.wall_seconds);

@@ -1,10 +1,10 @@
-// `tendril prepare-pneumatic`: the pneumatic arm's recordings as the learned-dynamics layer's
+// `tendril data prepare`: the pneumatic arm's recordings as the learned-dynamics layer's
 // prepared data set (the file configs/dynamics/pneumatic_softsign_lstm.yaml reads).
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/dynamics/prepared_csv.hpp"
@@ -33,16 +33,15 @@ void append(SequenceData& data, const envs::pneumatic::PneumaticDataset& recordi
 
 }  // namespace
 
-int pneumatic_prepare_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"train", "test", "out"}, {});
-  require(line.positional.empty() && line.has("out") && (line.has("train") || line.has("test")),
-          "expected --train FILE and/or --test FILE, and --out FILE", "prepare-pneumatic");
+int data_prepare_command(const Arguments& line) {
+  require(line.positional.empty() && line.has("output") && (line.has("train") || line.has("test")),
+          "expected --train FILE and/or --test FILE, and -o FILE", "tendril data prepare");
   SequenceData data;
   data.state_names = {"x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3"};
   data.input_names = {"p1", "p2", "p3", "p4", "p5", "p6", "p7", "p8", "p9"};
   data.states.resize(0, 9);
   data.inputs.resize(0, 9);
-  data.source = line.value("out", "");
+  data.source = line.value("output", "");
   // A test recording restarts its clock at 0, so the reader's segments keep the two apart.
   for (const auto& [flag, split] : {std::pair{"train", Split::kTrain}, {"test", Split::kTest}}) {
     if (!line.has(flag)) continue;
@@ -50,9 +49,9 @@ int pneumatic_prepare_command(const std::vector<std::string>& args) {
     append(data, recording, split);
     std::printf("%-5s %5d rows from %s\n", flag, recording.size(), line.value(flag, "").c_str());
   }
-  dynamics::write_prepared_csv(data, line.value("out", ""));
+  dynamics::write_prepared_csv(data, line.value("output", ""));
   std::printf("wrote %s (time_s, x1 … z3 [mm], p1 … p9 [bar], split)\n",
-              line.value("out", "").c_str());
+              line.value("output", "").c_str());
   return 0;
 }
 

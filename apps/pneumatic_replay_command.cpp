@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/pneumatic/open_loop_reach.hpp"
@@ -13,13 +13,12 @@
 
 namespace tendril::apps {
 
-int pneumatic_replay_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"out"}, {});
+int pneumatic_replay(const Arguments& line) {
   const Config config = line.load_config();
-  const std::string directory = line.value("out", config.get_or<std::string>("output", ""));
+  const std::string directory = line.value("output", config.get_or<std::string>("output", ""));
   require(!directory.empty(), "no output directory: set `output` or pass --out", config.source());
-  std::string invocation = "tendril replay-pneumatic";
-  for (const std::string& arg : args) invocation += " " + arg;
+  std::string invocation = "tendril data replay";
+  for (const std::string& arg : line.raw) invocation += " " + arg;
   const bool open_loop = config.has("open_loop");
   const envs::pneumatic::OpenLoopOptions options =
       envs::pneumatic::open_loop_options(config.child("open_loop"));

@@ -6,6 +6,9 @@
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
+#ifdef TENDRIL_WITH_SAFETY
+#include "tendril/safety/safety_evaluation.hpp"
+#endif
 
 namespace tendril::apps {
 
@@ -14,7 +17,20 @@ namespace fs = std::filesystem;
 RunPolicy open_run_policy(const fs::path& run, bool best,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
   require(fs::exists(run / "config.yaml"), "not a run directory (no config.yaml)", run.string());
+#ifdef TENDRIL_WITH_SAFETY
+  // A safety co-training or constrained run: its task experiment (what its model.policy acts in).
+  Config config = Config::load_file(run / "config.yaml");
+  const bool safety_run = config.has("safety") || config.has("constrained");
+  for (const auto& [key, value] : overrides) config.set(key, value);
+  RunPolicy result{safety_run ? safety::task_experiment_of_config(config)
+                              : rl::load_run_experiment(run, overrides),
+                   {},
+                   {},
+                   {},
+                   {}};
+#else
   RunPolicy result{rl::load_run_experiment(run, overrides), {}, {}, {}, {}};
+#endif
   const rl::Experiment& experiment = result.experiment;
   const fs::path file = run / (best ? "best_model.policy" : "model.policy");
   require(!best || fs::exists(file), "no best_model.policy (the run's eval.save_best is off)",

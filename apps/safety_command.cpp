@@ -10,7 +10,7 @@
 #include <limits>
 #include <sstream>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
@@ -24,39 +24,11 @@
 namespace tendril::apps {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: tendril safety train <experiment.yaml> [--out DIR] [--set key=value ...]\n"
-    "       tendril safety eval <run> [--epsilon E[,E...]] [--episodes N] [--seed S]\n"
-    "                               [--task RUN|random] [--csv FILE] [--trajectory FILE]\n"
-    "       tendril safety search <run> [--restarts N] [--step-size A] [--tolerance D]\n"
-    "                                 [--seed S] [--csv FILE] [--final-value]\n"
-    "       tendril safety map <run> --out FILE [--resolution N] [--extent X] [--axes I,J]\n"
-    "                              [--fixed V,...] [--epsilon E[,E...]]\n"
-    "       tendril safety diamond <run> [--epsilon E[,E...]] [--trials N] [--seed S]\n"
-    "                                  [--limb stiff|soft] [--csv FILE] [--trajectories FILE]";
-
 std::filesystem::path new_run_directory(const std::string& output) {
   const std::time_t now = std::time(nullptr);
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
   return output + "-" + stamp;
-}
-
-double parse_number(const std::string& text, const std::string& flag) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  require(!text.empty() && end == text.c_str() + text.size() && std::isfinite(value),
-          "not a finite number: '" + text + "'", flag);
-  return value;
-}
-
-std::vector<double> parse_numbers(const std::string& text, const std::string& flag) {
-  std::vector<double> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) values.push_back(parse_number(item, flag));
-  require(!values.empty(), "expected one or more comma-separated numbers", flag);
-  return values;
 }
 
 void print_evaluation(const char* name, const safety::SafetyEvaluation& e) {
@@ -109,9 +81,9 @@ int evaluate(const std::filesystem::path& run, const std::vector<double>& epsilo
   return 0;
 }
 
-std::filesystem::path run_directory_of(const CommandLine& line, const rl::Experiment& task) {
-  return line.has("out") ? std::filesystem::path(line.value("out", ""))
-                         : new_run_directory(task.output);
+std::filesystem::path run_directory_of(const Arguments& line, const rl::Experiment& task) {
+  return line.has("output") ? std::filesystem::path(line.value("output", ""))
+                            : new_run_directory(task.output);
 }
 
 void print_start(const rl::Experiment& task, const std::string& with,
@@ -121,27 +93,28 @@ void print_start(const rl::Experiment& task, const std::string& with,
               static_cast<unsigned long long>(task.seed), run.string().c_str());
 }
 
-int train_baseline(const CommandLine& line, const Config& config) {
+int train_baseline(const Arguments& line, const Config& config) {
   const safety::ConstrainedExperiment baseline = safety::ConstrainedExperiment::from_config(config);
   const rl::Experiment& task = baseline.task;
   const std::filesystem::path run = run_directory_of(line, task);
   print_start(task, "the " + baseline.method + " baseline", run);
-  const auto result = safety::train_constrained(baseline, run);
+  const auto result = safety::train_constrained(baseline, run, line.has("quiet"));
   std::printf("trained in %.1f s; multiplier %.4g, E[Q_risk] %.4f; model: %s/model.policy\n",
               result.seconds, result.final_multiplier, result.final_cost_value,
               run.string().c_str());
   return evaluate(run, {0.0}, 100, task.seed, {}, "");
 }
 
-int train(const std::vector<std::string>& rest) {
-  const CommandLine line = CommandLine::parse(rest, {"out"}, {});
-  const Config config = line.load_config();
+}  // namespace
+
+int safety_train(const Arguments& line, const Config& config) {
   if (config.has("constrained")) return train_baseline(line, config);
   const safety::SafetyExperiment co_trained = safety::SafetyExperiment::from_config(config);
   const rl::Experiment& task = co_trained.task;
   const std::filesystem::path run = run_directory_of(line, task);
   print_start(task, "a " + co_trained.safety_algorithm + " safety agent", run);
-  const safety::SafetyTrainResult result = safety::train_with_safety(co_trained, run);
+  const safety::SafetyTrainResult result =
+      safety::train_with_safety(co_trained, run, line.has("quiet"));
   std::printf(
       "trained in %.1f s; safety buffer: %lld stored, %lld gated, %lld unsafe entries; "
       "training filter interventions %.3f\n",
@@ -153,10 +126,7 @@ int train(const std::vector<std::string>& rest) {
   return evaluate(run, {co_trained.eval_epsilon}, co_trained.eval_episodes, task.seed, {}, "");
 }
 
-int eval(const std::vector<std::string>& rest) {
-  const CommandLine line =
-      CommandLine::parse(rest, {"epsilon", "episodes", "seed", "task", "csv", "trajectory"}, {});
-  require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
+int safety_eval_command(const Arguments& line) {
   const std::filesystem::path run = line.positional[0];
   // A co-training run brings its evaluation settings; any other run is judged unfiltered.
   int default_episodes = 100;
@@ -170,9 +140,8 @@ int eval(const std::vector<std::string>& rest) {
   }
   const int episodes = static_cast<int>(
       line.integer("episodes", default_episodes, 1, std::numeric_limits<int>::max()));
-  const std::vector<double> epsilons = line.has("epsilon")
-                                           ? parse_numbers(line.value("epsilon", ""), "--epsilon")
-                                           : std::vector<double>{default_epsilon};
+  const std::vector<double> epsilons = line.has("epsilon") ? line.numbers("epsilon", -1e300, 1e300)
+                                                           : std::vector<double>{default_epsilon};
   safety::TaskSource task;
   if (line.has("task")) {
     const std::string value = line.value("task", "");
@@ -184,21 +153,14 @@ int eval(const std::vector<std::string>& rest) {
                   line.value("csv", ""), line.value("trajectory", ""));
 }
 
-int search(const std::vector<std::string>& rest) {
-  const CommandLine line = CommandLine::parse(
-      rest, {"restarts", "step-size", "tolerance", "seed", "csv"}, {"final-value"});
-  require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
+int safety_search_command(const Arguments& line) {
   const std::filesystem::path run = line.positional[0];
   safety::EpsilonSearchOptions options;
   options.unit_gradient = true;
   options.survivor_value = !line.has("final-value");
   options.restarts = static_cast<int>(line.integer("restarts", options.restarts, 1, 100000));
-  if (line.has("step-size")) {
-    options.step_size = parse_number(line.value("step-size", ""), "--step-size");
-  }
-  if (line.has("tolerance")) {
-    options.tolerance = parse_number(line.value("tolerance", ""), "--tolerance");
-  }
+  options.step_size = line.number("step-size", options.step_size, 1e-12, 1e12);
+  options.tolerance = line.number("tolerance", options.tolerance, 0.0, 1e12);
   const uint64_t seed = line.unsigned_integer("seed", 0);
   const safety::RunEpsilonSearch search = safety::search_epsilon_of_run(run, options, seed);
   std::ostringstream rows;
@@ -228,31 +190,28 @@ int search(const std::vector<std::string>& rest) {
   return 0;
 }
 
-int map(const std::vector<std::string>& rest) {
-  const CommandLine line =
-      CommandLine::parse(rest, {"out", "resolution", "extent", "axes", "fixed", "epsilon"}, {});
-  require(line.positional.size() == 1 && line.overrides.empty() && line.has("out"), kUsage,
-          "command line");
+int safety_map_command(const Arguments& line) {
+  require(line.has("output"), "needs -o FILE.csv, where the map is written", "safety map");
   safety::ValueMapOptions options;
   options.resolution = static_cast<int>(line.integer("resolution", options.resolution, 2, 2001));
-  if (line.has("extent")) options.extent = parse_number(line.value("extent", ""), "--extent");
+  options.extent = line.number("extent", options.extent, 1e-12, 1e12);
   if (line.has("axes")) {
-    const std::vector<double> axes = parse_numbers(line.value("axes", ""), "--axes");
+    const std::vector<double> axes = line.numbers("axes", 0, 1000);
     require(axes.size() == 2, "expected two coordinate indices I,J", "--axes");
     options.x_axis = static_cast<int>(axes[0]);
     options.y_axis = static_cast<int>(axes[1]);
   }
   if (line.has("fixed")) {
-    const std::vector<double> fixed = parse_numbers(line.value("fixed", ""), "--fixed");
+    const std::vector<double> fixed = line.numbers("fixed", -1e300, 1e300);
     options.fixed =
         Eigen::Map<const Eigen::VectorXd>(fixed.data(), static_cast<Eigen::Index>(fixed.size()));
   }
   const safety::ValueMap map = safety::value_map_of_run(line.positional[0], options);
-  map.write_csv(line.value("out", ""));
+  map.write_csv(line.value("output", ""));
   std::printf("%lld points -> %s\n", static_cast<long long>(map.rows.rows()),
-              line.value("out", "").c_str());
+              line.value("output", "").c_str());
   if (map.has_analytic_set && line.has("epsilon")) {
-    for (double epsilon : parse_numbers(line.value("epsilon", ""), "--epsilon")) {
+    for (double epsilon : line.numbers("epsilon", -1e300, 1e300)) {
       std::printf("epsilon_2 %g: %.4f of the learned safe states lie outside the analytic set\n",
                   epsilon, map.fraction_outside_analytic(epsilon));
     }
@@ -260,15 +219,12 @@ int map(const std::vector<std::string>& rest) {
   return 0;
 }
 
-int diamond(const std::vector<std::string>& rest) {
-  const CommandLine line =
-      CommandLine::parse(rest, {"epsilon", "trials", "seed", "limb", "csv", "trajectories"}, {});
-  require(line.positional.size() == 1 && line.overrides.empty(), kUsage, "command line");
+int safety_diamond_command(const Arguments& line) {
   safety::DiamondOptions options;
-  if (line.has("epsilon")) options.epsilons = parse_numbers(line.value("epsilon", ""), "--epsilon");
+  if (line.has("epsilon")) options.epsilons = line.numbers("epsilon", -1e300, 1e300);
   options.trials = static_cast<int>(line.integer("trials", options.trials, 1, 1000));
   options.seed = line.unsigned_integer("seed", 0);
-  options.limb_params = Config::parse("limb: " + line.value("limb", "stiff"));
+  options.limb_params.set("limb", line.value("limb", "stiff"));
   const std::vector<safety::DiamondTrial> trials = safety::run_diamond(line.positional[0], options);
   std::ostringstream summary, paths;
   summary << "epsilon,trial,time_to_violation_s,intervention_rate\n";
@@ -293,19 +249,6 @@ int diamond(const std::vector<std::string>& rest) {
     write_file_atomically(line.value("trajectories", ""), paths.str(), "--trajectories");
   }
   return 0;
-}
-
-}  // namespace
-
-int safety_command(const std::vector<std::string>& args) {
-  require(!args.empty(), kUsage, "command line");
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "train") return train(rest);
-  if (args[0] == "eval") return eval(rest);
-  if (args[0] == "search") return search(rest);
-  if (args[0] == "map") return map(rest);
-  if (args[0] == "diamond") return diamond(rest);
-  throw Error(kUsage, "command line");
 }
 
 }  // namespace tendril::apps

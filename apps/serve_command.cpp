@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/dashboard/server.hpp"
@@ -18,8 +18,7 @@ bool is_loopback(const std::string& host) {
 
 }  // namespace
 
-int serve_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"port", "host", "assets"}, {});
+int serve_command(const Arguments& line) {
   require(line.positional.size() == 1, "expected one directory to serve", "command line");
   dashboard::ServerOptions options;
   options.root = line.positional.front();

@@ -4,12 +4,13 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
+#include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/physics/arms/elastica_arm.hpp"
 
@@ -62,8 +63,8 @@ Eigen::VectorXd actuation_from(const Config& actuation, physics::SplineActuation
   return Eigen::Map<Eigen::VectorXd>(targets.data(), static_cast<Eigen::Index>(targets.size()));
 }
 
-fs::path output_directory(const CommandLine& line, const std::string& configured) {
-  fs::path directory = line.value("out", "");
+fs::path output_directory(const Arguments& line, const std::string& configured) {
+  fs::path directory = line.value("output", "");
   if (directory.empty()) {
     const std::time_t now = std::time(nullptr);
     char stamp[32];
@@ -80,8 +81,7 @@ fs::path output_directory(const CommandLine& line, const std::string& configured
 
 }  // namespace
 
-int simulate_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"out"}, {"overwrite"});
+int simulate_command(const Arguments& line) {
   const Config config = line.load_config();
   ElasticaArmSpec spec = arm_spec_from(config.child("arm"));
   const Eigen::VectorXd targets = actuation_from(config.child("actuation"), spec.actuation);
@@ -96,9 +96,9 @@ int simulate_command(const std::vector<std::string>& args) {
   ElasticaArm arm = physics::build_elastica_arm(spec);
   arm.muscles->set_targets(targets);
   const fs::path directory = output_directory(line, configured_output);
-  std::ofstream(directory / "config.yaml") << config.dump();
-
-  std::ofstream tip_file(directory / "tip.csv");
+  // The files are written whole at the end, each checked (a full disk is an error naming it).
+  std::ostringstream tip_file;
+  tip_file.precision(6);
   tip_file << "time,tip_x,tip_y,tip_z,tip_speed,kinetic_energy,shear_stretch_energy,"
               "bend_twist_energy,contacts\n";
   const int steps_per_record =
@@ -136,17 +136,22 @@ int simulate_command(const std::vector<std::string>& args) {
     steps += steps_per_record;
     if (!finite) {
       std::printf("the rod's state became non-finite at t = %.4f s; stopping\n", arm.rod.time());
+      write_file_atomically(directory / "config.yaml", config.dump(), "config.yaml");
+      write_file_atomically(directory / "tip.csv", tip_file.str(), "tip.csv");
       return 1;
     }
     record(r % std::max(1, records / 10) == 0 || r == records);
   }
 
-  std::ofstream node_file(directory / "nodes.csv");
+  std::ostringstream node_file;
   node_file << "node,x,y,z\n";
   for (int j = 0; j <= arm.rod.n_elements(); ++j) {
     const Eigen::Vector3d x = arm.rod.state().positions.col(j);
     node_file << j << ',' << x.x() << ',' << x.y() << ',' << x.z() << '\n';
   }
+  write_file_atomically(directory / "config.yaml", config.dump(), "config.yaml");
+  write_file_atomically(directory / "tip.csv", tip_file.str(), "tip.csv");
+  write_file_atomically(directory / "nodes.csv", node_file.str(), "nodes.csv");
   const double us_per_step = 1e6 * stepping_seconds / static_cast<double>(steps);
   std::printf("%lld steps in %.3f s of stepping: %.2f us per step (%.0f steps/s)\n",
               static_cast<long long>(steps), stepping_seconds, us_per_step, 1e6 / us_per_step);

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
@@ -156,7 +156,10 @@ int aggregate(const rl::Sweep& sweep, bool figures) {
   return failed ? 1 : 0;
 }
 
-int write_slurm_script(const rl::Sweep& sweep, const CommandLine& line) {
+}  // namespace
+
+int sweep_slurm_command(const Arguments& line) {
+  const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
   rl::SlurmOptions options;
   options.tendril = this_program();
   options.sweep_file = fs::absolute(line.positional.front()).lexically_normal();
@@ -174,30 +177,23 @@ int write_slurm_script(const rl::Sweep& sweep, const CommandLine& line) {
   const std::string script = rl::slurm_script(sweep, options);
   const fs::path folder = fs::path(sweep.output) / "slurm";
   fs::create_directories(folder);  // the tasks' logs go here too
-  const fs::path file = line.value("out", (folder / "sweep.sbatch").string());
+  const fs::path file = line.value("output", (folder / "sweep.sbatch").string());
   write_file_atomically(file, script, "Slurm script");
   fs::permissions(file, fs::perms::owner_exec | fs::perms::group_exec, fs::perm_options::add);
   std::printf("%s\nsubmit with:  sbatch %s\n", file.c_str(), file.c_str());
   return 0;
 }
 
-}  // namespace
+int sweep_summarize_command(const Arguments& line) {
+  return aggregate(rl::Sweep::load(line.positional.front()), !line.has("no-figures"));
+}
 
-int sweep_command(const std::vector<std::string>& args) {
-  const CommandLine line =
-      CommandLine::parse(args,
-                         {"only", "rank", "ranks", "tasks", "max-running", "cpus-per-task",
-                          "job-name", "time", "mem", "partition", "account", "stop-before", "out"},
-                         {"list", "quiet", "aggregate-only", "no-figures", "slurm"});
-  require(line.positional.size() == 1 && line.overrides.empty(),
-          "expects one sweep file (and no --set)", "command line");
-  const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
-  const std::vector<rl::Sweep::Run> runs = sweep.runs();
-  const int count = static_cast<int>(runs.size());
-  if (line.has("slurm")) return write_slurm_script(sweep, line);
-  if (line.has("aggregate-only")) return aggregate(sweep, !line.has("no-figures"));
+namespace {
 
-  rl::SweepShare share = rl::SweepShare::from_environment();
+// The runs this process takes: all, its rank's share (--rank/--ranks, or MPI's or Slurm's
+// environment), or the one --only names.
+std::vector<int> runs_of_this_process(const Arguments& line, int count, rl::SweepShare& share) {
+  share = rl::SweepShare::from_environment();
   require(line.has("rank") == line.has("ranks"), "are given together", "--rank/--ranks");
   if (line.has("ranks")) {
     share.ranks = static_cast<int>(line.integer("ranks", 1, 1, 1 << 20));
@@ -209,16 +205,31 @@ int sweep_command(const std::vector<std::string>& args) {
     require(share.ranks == 1, "cannot be combined with several ranks", "--only");
     indices = {static_cast<int>(line.integer("only", 0, 0, count - 1))};
   }
+  return indices;
+}
+
+}  // namespace
+
+int sweep_list_command(const Arguments& line) {
+  const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
+  const std::vector<rl::Sweep::Run> runs = sweep.runs();
+  rl::SweepShare share;
+  for (const int i : runs_of_this_process(line, static_cast<int>(runs.size()), share)) {
+    std::printf("%3d  %s\n", i, sweep.directory(runs[i]).c_str());
+  }
+  return 0;
+}
+
+int sweep_run_command(const Arguments& line) {
+  const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
+  const std::vector<rl::Sweep::Run> runs = sweep.runs();
+  const int count = static_cast<int>(runs.size());
+
+  rl::SweepShare share;
+  const std::vector<int> indices = runs_of_this_process(line, count, share);
   const std::string who = share.ranks > 1 ? "[rank " + std::to_string(share.rank) + "/" +
                                                 std::to_string(share.ranks) + "] "
                                           : "";
-  if (line.has("list")) {
-    for (const int i : indices) {
-      std::printf("%3d  %s\n", i, sweep.directory(runs[i]).c_str());
-    }
-    return 0;
-  }
-
   rl::TrainOptions options;
   options.quiet = line.has("quiet");
   catch_interrupts();
@@ -249,7 +260,7 @@ int sweep_command(const std::vector<std::string>& args) {
     const auto& last = records.back();
     std::printf(
         "%s  interrupted by %s after %lld steps; its checkpoint holds the run\n"
-        "continue with:  tendril sweep %s\n",
+        "continue with:  tendril sweep run %s\n",
         who.c_str(), signal_name(last.result.interrupted),
         static_cast<long long>(last.result.timesteps), line.positional.front().c_str());
     return 128 + last.result.interrupted;
@@ -259,7 +270,7 @@ int sweep_command(const std::vector<std::string>& args) {
   if (!rl::sweep_finished(sweep)) {
     std::printf(
         "%sother runs are not finished yet: the process that finishes the last one writes the "
-        "summary (or: tendril sweep %s --aggregate-only)\n",
+        "summary (or: tendril sweep summarize %s)\n",
         who.c_str(), line.positional.front().c_str());
     return 0;
   }

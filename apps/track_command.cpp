@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/control/reference_patterns.hpp"
 #include "tendril/control/tracking_loop.hpp"
@@ -54,36 +54,45 @@ class RobotLimb final : public control::TrackedLimb {
   data::StateFilter filter_;
 };
 
-void write_run(const std::filesystem::path& file, const std::string& pattern,
+void write_run(std::ofstream& out, const std::filesystem::path& file, const std::string& pattern,
                const control::TrackingRun& run, bool append) {
-  std::ofstream out(file, append ? std::ios::app : std::ios::trunc);
-  require(static_cast<bool>(out), "cannot write", file.string());
   if (!append) out << "pattern,step,time_s,theta_x,theta_y,goal_x,goal_y,u_x,u_y\n";
   for (Eigen::Index k = 0; k < run.angles.cols(); ++k) {
     out << pattern << ',' << k << ',' << run.times[k] << ',' << run.angles(0, k) << ','
         << run.angles(1, k) << ',' << run.goals(0, k) << ',' << run.goals(1, k) << ','
         << run.throttles(0, k) << ',' << run.throttles(1, k) << '\n';
   }
+  out.flush();
+  require(out.good(), "writing failed (disk full?)", file.string());
 }
 
 }  // namespace
 
-int track_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(
-      args, {"limb", "tip-mass", "push", "steps", "seed", "out", "policy"}, {"best", "stochastic"});
-  require(line.positional.size() <= 1, "usage: tendril track [PATTERN|all] [options]",
-          "tendril track");
+int track_command(const Arguments& line) {
   const std::string which = line.positional.empty() ? "all" : line.positional[0];
   std::vector<std::string> patterns = control::reference_pattern_names();
   if (which != "all") patterns = {which};
   const std::string limb = line.value("limb", "stiff");
-  const double tip_mass = std::stod(line.value("tip-mass", "0"));
-  const double push_n = std::stod(line.value("push", "0"));
-  const int max_steps = std::stoi(line.value("steps", "3000"));
-  const uint64_t seed = std::stoull(line.value("seed", "0"));
-  const std::string out = line.value("out", "");
+  const double tip_mass = line.number("tip-mass", 0.0, 0.0, 1.0);
+  const double push_n = line.number("push", 0.0, 0.0, 100.0);
+  const int max_steps = static_cast<int>(line.integer("steps", 3000, 1, 100000000));
+  const uint64_t seed = line.unsigned_integer("seed", 0);
+  // The policies, models and data sets came from the calibrated limb (its PWM table, its
+  // sensor's zero offsets removed): a deployment names the calibration it runs on, or says
+  // `none` to run on the nominal table with the raw readings.
+  const std::string calibration = line.value("calibration");
+  require(!calibration.empty(),
+          "name the limb's calibration (--calibration FILE, written by `tendril data calibrate`; "
+          "or --calibration none for the nominal table and raw readings)",
+          "tendril track");
+  const std::string out = line.value("output", "");
   require(!out.empty() ? !std::filesystem::exists(out) : true,
-          "refusing to overwrite an existing file", out);
+          "exists already; choose another file", out);
+  std::ofstream out_file;
+  if (!out.empty()) {
+    out_file.open(out, std::ios::binary);
+    require(out_file.good(), "cannot write", out);
+  }
 
   // The controller: PID, or a trained policy that acts on the limb as on the learned model.
   std::function<std::unique_ptr<control::TrackingController>()> make_controller = [] {
@@ -110,8 +119,13 @@ int track_command(const std::vector<std::string>& args) {
   std::printf("%-8s %8s %9s %10s\n", "pattern", "steps", "finished", "RMSE [deg]");
   bool first = true;
   for (const std::string& pattern : patterns) {
-    Config params = Config::parse("limb: " + limb + "\ntip_mass: " + std::to_string(tip_mass) +
-                                  "\nseed: " + std::to_string(seed));
+    Config params;
+    params.set("limb", limb);
+    char mass[32];
+    std::snprintf(mass, sizeof mass, "%.17g", tip_mass);
+    params.set("tip_mass", mass);
+    params.set("seed", std::to_string(seed));
+    if (calibration != "none") params.set("calibration", calibration);
     auto env = envs::sma_limb::SmaLimbEnv::create(params);
     auto& robot = dynamic_cast<envs::sma_limb::SmaLimbEnv&>(*env);
     RobotLimb limb_under_control(robot, seed);
@@ -137,10 +151,14 @@ int track_command(const std::vector<std::string>& args) {
       std::printf("%-8s %8ld %9s %10.2f\n", pattern.c_str(), static_cast<long>(run.angles.cols()),
                   run.finished ? "yes" : "no", run.rmse_deg);
     }
-    if (!out.empty()) write_run(out, pattern, run, !first);
+    if (!out.empty()) write_run(out_file, out, pattern, run, !first);
     first = false;
   }
-  if (!out.empty()) std::printf("wrote %s\n", out.c_str());
+  if (!out.empty()) {
+    out_file.close();
+    require(!out_file.fail(), "writing failed (disk full?)", out);
+    std::printf("wrote %s\n", out.c_str());
+  }
   return 0;
 }
 

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <limits>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
@@ -53,30 +53,44 @@ int report(const rl::TrainResult& result) {
                 signal_name(result.interrupted), static_cast<long long>(result.timesteps));
   }
   if (!result.finished) {
-    std::printf("continue with:  tendril train --resume %s\n", run.c_str());
+    std::printf("continue with:  tendril resume %s\n", run.c_str());
   }
   return result.interrupted ? 128 + result.interrupted : 0;
 }
 
 }  // namespace
 
-int train_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"out", "resume", "stop-at"}, {"quiet"});
+int resume_command(const Arguments& line) {
+  const std::filesystem::path run = line.positional.front();
+  if (std::filesystem::exists(run / "config.yaml")) {
+    const Config config = Config::load_file(run / "config.yaml");
+    require(!config.has("safety") && !config.has("constrained"),
+            "safety co-training and constrained runs keep no checkpoints yet: train them again",
+            run.string());
+  }
   rl::TrainOptions options;
   options.quiet = line.has("quiet");
-  if (line.has("stop-at")) {
-    options.stop_at = line.integer("stop-at", 0, 1, std::numeric_limits<int64_t>::max());
+  options.stop_at = line.optional_integer("stop-at", 1, std::numeric_limits<int64_t>::max());
+  catch_interrupts();
+  return report(rl::resume(line.positional.front(), options));
+}
+
+int train_command(const Arguments& line) {
+  const Config config = line.load_config();
+#ifdef TENDRIL_WITH_SAFETY
+  // Safety co-training (a `safety:` section) and the constrained baselines (`constrained:`).
+  if (config.has("safety") || config.has("constrained")) {
+    require(!line.has("stop-at"), "safety and constrained runs train to the end", "--stop-at");
+    return safety_train(line, config);
   }
-  if (line.has("resume")) {
-    require(line.positional.empty() && line.overrides.empty(),
-            "--resume takes only the run directory (its config.yaml is used as saved)",
-            "command line");
-    catch_interrupts();
-    return report(rl::resume(line.value("resume", ""), options));
-  }
-  const rl::Experiment experiment = rl::Experiment::from_config(line.load_config());
-  const std::filesystem::path run = line.has("out") ? std::filesystem::path(line.value("out", ""))
-                                                    : new_run_directory(experiment.output);
+#endif
+  rl::TrainOptions options;
+  options.quiet = line.has("quiet");
+  options.stop_at = line.optional_integer("stop-at", 1, std::numeric_limits<int64_t>::max());
+  const rl::Experiment experiment = rl::Experiment::from_config(config);
+  const std::filesystem::path run = line.has("output")
+                                        ? std::filesystem::path(line.value("output", ""))
+                                        : new_run_directory(experiment.output);
   std::printf("training %s on %s (%d envs) for %lld steps, seed %llu -> %s\n",
               experiment.algorithm.c_str(), experiment.env.id.c_str(), experiment.env.n_envs,
               static_cast<long long>(experiment.n_timesteps),

@@ -1,5 +1,5 @@
 """Writes a prepared data set (tendril's prepared CSV) of a known nonlinear system shaped like
-seed 001's SMA limb, for timing and checking `tendril dynamics fit` before the twin's data exist.
+seed 001's SMA limb, for timing and checking `tendril model fit` before the twin's data exist.
 
 The system is the one of tests/dynamics/synthetic_limb.hpp: two bending angles θ (deg) driven by
 two integer throttles u ∈ [−10, 10] (held for 10 samples) through a first-order heat lag

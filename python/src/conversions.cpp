@@ -1,8 +1,12 @@
 #include "conversions.hpp"
 
+#include <climits>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <sstream>
 
+#include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::python {
@@ -39,6 +43,45 @@ std::string shape_text(const py::array& array) {
   text << (array.ndim() == 1 ? ",)" : ")");
   return text.str();
 }
+
+// repr(value), cut to a length fit for a message.
+std::string short_repr(const py::handle& value) {
+  std::string text = py::repr(value).cast<std::string>();
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  return text;
+}
+
+// The array of numbers `value` holds, or Error: None, text, objects and complex numbers are not
+// numbers an environment can take (NumPy would turn None into NaN and drop an imaginary part).
+py::array number_array(const py::handle& value, const std::string& what, const std::string& who) {
+  if (value.is_none()) throw Error(what + " must be numbers, got None", who);
+  const py::array array = py::array::ensure(value);
+  if (!array) throw Error(what + " must be numbers, got " + short_repr(value), who);
+  const char kind = array.dtype().kind();
+  if (kind == 'c') {
+    throw Error(what + " must be real numbers, got complex " + short_repr(value), who);
+  }
+  if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b') {
+    throw Error(what + " must be numbers, got dtype " + py::str(array.dtype()).cast<std::string>() +
+                    " (" + short_repr(value) + ")",
+                who);
+  }
+  return array;
+}
+
+// The integer `value` holds (Python int, NumPy integer, anything with __index__), as a Python
+// int; nothing for floats, text and booleans.
+std::optional<py::int_> integer_of(const py::handle& value) {
+  if (PyBool_Check(value.ptr())) return std::nullopt;
+  PyObject* index = PyNumber_Index(value.ptr());
+  if (index == nullptr) {
+    PyErr_Clear();
+    return std::nullopt;
+  }
+  return py::reinterpret_steal<py::int_>(index);
+}
+
+constexpr char kStateMagic[8] = {'t', 'n', 'd', 'l', 's', 't', 'a', '1'};
 
 }  // namespace
 
@@ -133,21 +176,31 @@ Config params_from_json(const std::string& json, const std::string& what) {
 
 Action action_from_python(const Space& space, const py::handle& value, std::string_view who) {
   const std::string where(who);
+  const py::array numbers = number_array(value, "an action", where);
   if (space.is_discrete()) {
-    const py::array array = py::array::ensure(value);
-    require(array && array.size() == 1 && array.ndim() <= 1,
+    const py::array& array = numbers;
+    require(array.size() == 1 && array.ndim() <= 1,
             "a Discrete(" + std::to_string(space.n()) + ") action is one integer index, got " +
-                (array ? "an array of shape " + shape_text(array) : std::string("a non-number")),
+                "an array of shape " + shape_text(array),
             where);
     require(array.dtype().kind() == 'i' || array.dtype().kind() == 'u',
             "a Discrete action must be an integer, got dtype " +
                 py::str(array.dtype()).cast<std::string>(),
             where);
+    // A NumPy uint64 may exceed every int64 (the range itself is Env::step's to check).
+    const py::int_ index = array.attr("item")();
+    int overflow = 0;
+    const long long chosen = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+    if (overflow != 0) {
+      throw Error("the Discrete(" + std::to_string(space.n()) + ") action " + short_repr(index) +
+                      " lies outside [0, " + std::to_string(space.n()) + ")",
+                  where);
+    }
     Action action(1);
-    action[0] = static_cast<float>(array.attr("item")().cast<int64_t>());
+    action[0] = static_cast<float>(chosen);
     return action;
   }
-  const FloatArray array = FloatArray::ensure(value);
+  const FloatArray array = FloatArray::ensure(numbers);
   require(static_cast<bool>(array), "an action must be a number array", where);
   const auto size = static_cast<py::ssize_t>(space.size());
   const bool shaped =
@@ -164,7 +217,7 @@ Action action_from_python(const Space& space, const py::handle& value, std::stri
 void batch_from_python(const Space& space, int num_envs, const py::handle& value,
                        std::string_view who, envs::BatchMatrix& out) {
   const std::string where(who);
-  const FloatArray array = FloatArray::ensure(value);
+  const FloatArray array = FloatArray::ensure(number_array(value, "actions", where));
   require(static_cast<bool>(array), "actions must be a number array", where);
   const auto rows = static_cast<py::ssize_t>(num_envs);
   const auto cols = static_cast<py::ssize_t>(space.size());
@@ -183,6 +236,70 @@ py::array readonly_view(const float* data, std::vector<py::ssize_t> shape, py::h
   py::array view(py::dtype::of<float>(), std::move(shape), data, owner);
   py::detail::array_proxy(view.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return view;
+}
+
+py::array float_copy(const float* data, std::vector<py::ssize_t> shape) {
+  return py::array(py::dtype::of<float>(), std::move(shape), data);
+}
+
+std::optional<uint64_t> seed_from_python(const py::handle& value, uint64_t count,
+                                         std::string_view who) {
+  if (value.is_none()) return std::nullopt;
+  const uint64_t largest = std::numeric_limits<uint64_t>::max() - (count - 1);
+  const std::string range =
+      count > 1 ? "[0, 2**64 - " + std::to_string(count) + "] (env i is reset with seed + i)"
+                : "[0, 2**64 - 1]";
+  const std::optional<py::int_> integer = integer_of(value);
+  if (!integer) {
+    throw Error("the seed must be an integer in " + range + ", got " + short_repr(value),
+                std::string(who));
+  }
+  const unsigned long long seed = PyLong_AsUnsignedLongLong(integer->ptr());
+  if (PyErr_Occurred() || seed > largest) {  // negative, or beyond 64 bits, or wrapping
+    PyErr_Clear();
+    throw Error("the seed must be an integer in " + range + ", got " + short_repr(value),
+                std::string(who));
+  }
+  return static_cast<uint64_t>(seed);
+}
+
+int count_from_python(const py::handle& value, std::string_view what, std::string_view who) {
+  const std::optional<py::int_> integer = integer_of(value);
+  int overflow = 0;
+  const long long count = integer ? PyLong_AsLongLongAndOverflow(integer->ptr(), &overflow) : 0;
+  if (!integer || overflow != 0 || count < 1 || count > INT_MAX) {
+    throw Error(std::string(what) + " must be an integer in [1, " + std::to_string(INT_MAX) +
+                    "], got " + short_repr(value),
+                std::string(who));
+  }
+  return static_cast<int>(count);
+}
+
+py::bytes checksummed_state(const std::string& state) {
+  std::string data(kStateMagic, sizeof kStateMagic);
+  const uint32_t check = crc32c(state.data(), state.size());
+  data.append(reinterpret_cast<const char*>(&check), sizeof check);
+  data += state;
+  return py::bytes(data);
+}
+
+std::string verified_state(const std::string& data, std::string_view who) {
+  const std::size_t head = sizeof kStateMagic + sizeof(uint32_t);
+  if (data.size() < head || std::memcmp(data.data(), kStateMagic, sizeof kStateMagic) != 0) {
+    throw Error("not a state from save_state() (" + std::to_string(data.size()) + " bytes)",
+                std::string(who));
+  }
+  uint32_t stored = 0;
+  std::memcpy(&stored, data.data() + sizeof kStateMagic, sizeof stored);
+  const uint32_t computed = crc32c(data.data() + head, data.size() - head);
+  if (stored != computed) {
+    throw Error(
+        "the state's checksum does not match: its bytes changed after save_state() "
+        "(CRC-32C " +
+            checksum_text(computed) + ", saved " + checksum_text(stored) + ")",
+        std::string(who));
+  }
+  return data.substr(head);
 }
 
 }  // namespace tendril::python

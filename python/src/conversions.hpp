@@ -3,6 +3,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -49,5 +51,22 @@ py::array_t<uint8_t> image_to_numpy(const render::Image& image);
 
 // A NumPy view of `data` owned by `owner` (kept alive by the array), read-only.
 py::array readonly_view(const float* data, std::vector<py::ssize_t> shape, py::handle owner);
+
+// A float32 copy of `data`.
+py::array float_copy(const float* data, std::vector<py::ssize_t> shape);
+
+// A reset seed: None, or an integer (Python or NumPy) from 0 to 2^64 − `count` — a vector env
+// resets env i with seed + i, which must not wrap around to 0. Raises Error naming `who` and the
+// value otherwise (a float, a negative or too large number, text).
+std::optional<uint64_t> seed_from_python(const py::handle& value, uint64_t count,
+                                         std::string_view who);
+
+// A count (environments, threads) as an integer in [1, 2^31 − 1]; Error naming `what` otherwise.
+int count_from_python(const py::handle& value, std::string_view what, std::string_view who);
+
+// Binary data saved from an environment's state with a checksum (CRC-32C), and the state back
+// from such data: Error when the data is not such a state or was changed since.
+py::bytes checksummed_state(const std::string& state);
+std::string verified_state(const std::string& data, std::string_view who);
 
 }  // namespace tendril::python

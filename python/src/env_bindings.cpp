@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "object_lock.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/render/scene_rasterizer.hpp"
@@ -22,7 +23,9 @@ class PyEnv {
         env_(envs::make(id, params_from_json(params_json, "tendril.make('" + id + "') params"))),
         who_("tendril env " + id + " step") {}
 
-  py::array_t<float> reset(std::optional<uint64_t> seed) {
+  py::array_t<float> reset(const py::handle& seed_value) {
+    const auto lock = lock_.acquire();
+    const std::optional<uint64_t> seed = seed_from_python(seed_value, 1, "tendril env " + id_);
     Observation observation;
     {
       py::gil_scoped_release release;
@@ -36,6 +39,7 @@ class PyEnv {
   }
 
   py::tuple step(const py::handle& action_value) {
+    const auto lock = lock_.acquire();
     require(reset_, "call reset() before step()", who_);
     const Action action = action_from_python(env_->action_space(), action_value, who_);
     Step step;
@@ -54,13 +58,15 @@ class PyEnv {
                           info_to_dict(step.info));
   }
 
-  py::object scene() const {
+  py::object scene() {
+    const auto lock = lock_.acquire();
     Scene scene;
     if (!env_->describe_scene(scene)) return py::none();
     return scene_to_dict(scene);
   }
 
-  bool has_scene() const {
+  bool has_scene() {
+    const auto lock = lock_.acquire();
     Scene scene;
     return env_->describe_scene(scene);
   }
@@ -68,6 +74,7 @@ class PyEnv {
   // The scene now as a height × width × 3 image (render::SceneRasterizer), seen from one view
   // per episode (framed at the first picture after reset); None without a scene.
   py::object render(int width, int height, int supersample) {
+    const auto lock = lock_.acquire();
     Scene scene;
     if (!env_->describe_scene(scene)) return py::none();
     const render::RasterOptions options{width, height, supersample};
@@ -84,21 +91,34 @@ class PyEnv {
     return image_to_numpy(image_);
   }
 
-  std::optional<double> step_seconds() const { return step_seconds_; }
+  std::optional<double> step_seconds() {
+    const auto lock = lock_.acquire();
+    return step_seconds_;
+  }
 
-  py::bytes save_state() const {
+  // The snapshot with a checksum: a changed or damaged copy is refused, not loaded.
+  py::bytes save_state() {
+    const auto lock = lock_.acquire();
     Snapshot bytes;
     SnapshotWriter writer(bytes);
     env_->save_state(writer);
-    return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    return checksummed_state(
+        std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   }
 
   void load_state(const py::bytes& state) {
-    const auto bytes = static_cast<std::string>(state);
+    const auto lock = lock_.acquire();
+    const std::string bytes =
+        verified_state(static_cast<std::string>(state), "tendril env " + id_ + " load_state");
     SnapshotReader reader(
         std::span<const std::byte>(reinterpret_cast<const std::byte*>(bytes.data()), bytes.size()));
     env_->load_state(reader);
     reset_ = true;
+  }
+
+  void close() {
+    const auto lock = lock_.acquire();
+    env_->close();
   }
 
   const std::string& id() const { return id_; }
@@ -119,6 +139,7 @@ class PyEnv {
   std::optional<render::View> view_;
   render::Image image_;
   std::optional<double> reset_time_, step_seconds_;
+  ObjectLock lock_;  // one call at a time from Python threads (object_lock.hpp)
 };
 
 }  // namespace
@@ -154,7 +175,7 @@ void bind_env(py::module_& m) {
                              [](PyEnv& self) { return self.env().supports_snapshots(); })
       .def("save_state", &PyEnv::save_state)
       .def("load_state", &PyEnv::load_state, py::arg("state"))
-      .def("close", [](PyEnv& self) { self.env().close(); });
+      .def("close", &PyEnv::close);
 }
 
 }  // namespace tendril::python

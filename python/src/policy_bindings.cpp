@@ -3,16 +3,26 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <chrono>
+#include <condition_variable>
+#include <csignal>
+#include <cstdio>
 #include <ctime>
+#include <exception>
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "object_lock.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 #include "tendril/rl/experiment.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
@@ -42,6 +52,8 @@ class PyPolicy {
 
   // One observation (obs size,) → one action; a batch (B, obs size) → (B, action size).
   py::array act(const py::handle& value, bool deterministic) {
+    // The policy's buffers (and its network's) and its random stream serve one call at a time.
+    const auto lock = lock_.acquire();
     const FloatArray array = FloatArray::ensure(value);
     const std::string who = "policy " + file_.string();
     require(static_cast<bool>(array), "observations must be a number array", who);
@@ -80,6 +92,7 @@ class PyPolicy {
   std::filesystem::path file_;
   Rng rng_;
   envs::BatchMatrix observations_, actions_;
+  ObjectLock lock_;  // object_lock.hpp
 };
 
 std::filesystem::path new_run_directory(const std::string& output) {
@@ -87,6 +100,72 @@ std::filesystem::path new_run_directory(const std::string& output) {
   char stamp[32];
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
   return output + "-" + stamp;
+}
+
+// Runs `work` (a training, GIL-free) on a thread of its own while this thread, holding the GIL
+// between short waits, lets Python run its signal handlers: Ctrl-C raises KeyboardInterrupt
+// there, which becomes tendril's polite stop (core/interrupt.hpp) — the trainer writes a
+// checkpoint at the end of its iteration and returns. The KeyboardInterrupt is then raised with
+// where the run stands. Python handles signals in its main thread only; elsewhere this only waits.
+rl::TrainResult train_interruptibly(const std::function<rl::TrainResult()>& work,
+                                    const std::string& resume_call) {
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+  rl::TrainResult result;
+  std::exception_ptr failure;
+  std::thread worker([&] {
+    try {
+      result = work();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    done = true;
+    finished.notify_all();
+  });
+  std::optional<py::error_already_set> raised;
+  while (true) {
+    {
+      py::gil_scoped_release release;
+      std::unique_lock<std::mutex> lock(mutex);
+      if (finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
+    }
+    if (!raised && PyErr_CheckSignals() != 0) {
+      raised.emplace();  // takes the exception a signal handler raised
+      request_interrupt(SIGINT);
+    }
+  }
+  {
+    py::gil_scoped_release release;
+    worker.join();
+  }
+  if (raised) clear_interrupt();  // the stop asked for is done; a later run starts afresh
+  if (failure) std::rethrow_exception(failure);
+  if (!raised) return result;
+  if (!raised->matches(PyExc_KeyboardInterrupt)) throw *raised;
+  const std::string run = result.run_directory.string();
+  const std::string message =
+      result.interrupted
+          ? "training stopped at " + std::to_string(result.timesteps) +
+                " steps; a checkpoint holds the run: " + resume_call + "('" + run +
+                "') continues it (or: tendril resume " + run + ")"
+          : "training had finished (" + std::to_string(result.timesteps) + " steps, " + run + ")";
+  std::fprintf(stderr, "interrupted: %s\n", message.c_str());
+  PyErr_SetString(PyExc_KeyboardInterrupt, message.c_str());
+  throw py::error_already_set();
+}
+
+py::dict train_summary(const rl::TrainResult& result) {
+  py::dict summary;
+  summary["run_directory"] = result.run_directory.string();
+  summary["timesteps"] = result.timesteps;
+  summary["finished"] = result.finished;
+  summary["final_eval_mean"] = result.final_eval_mean;
+  summary["final_eval_std"] = result.final_eval_std;
+  summary["seconds"] = result.seconds;
+  summary["steps_per_second"] = result.steps_per_second;
+  return summary;
 }
 
 }  // namespace
@@ -123,24 +202,24 @@ void bind_train(py::module_& m) {
         rl::TrainOptions options;
         options.stop_at = stop_at;
         options.quiet = quiet;
-        rl::TrainResult result;
-        {
-          py::gil_scoped_release release;
-          result = rl::train(experiment, run, options);
-        }
-        py::dict summary;
-        summary["run_directory"] = result.run_directory.string();
-        summary["timesteps"] = result.timesteps;
-        summary["finished"] = result.finished;
-        summary["final_eval_mean"] = result.final_eval_mean;
-        summary["final_eval_std"] = result.final_eval_std;
-        summary["seconds"] = result.seconds;
-        summary["steps_per_second"] = result.steps_per_second;
-        return summary;
+        return train_summary(train_interruptibly(
+            [&] { return rl::train(experiment, run, options); }, "tendril.resume"));
       },
       py::arg("config_file"), py::arg("overrides") = std::vector<std::string>{},
       py::arg("out") = py::none(), py::arg("stop_at") = py::none(), py::arg("quiet") = false,
-      "Runs an experiment file in-process (tendril train), GIL released.");
+      "Runs an experiment file in-process (tendril train), GIL released; Ctrl-C stops it at a "
+      "checkpoint and raises KeyboardInterrupt.");
+  m.def(
+      "resume",
+      [](const std::filesystem::path& run, std::optional<int64_t> stop_at, bool quiet) {
+        rl::TrainOptions options;
+        options.stop_at = stop_at;
+        options.quiet = quiet;
+        return train_summary(
+            train_interruptibly([&] { return rl::resume(run, options); }, "tendril.resume"));
+      },
+      py::arg("run_directory"), py::arg("stop_at") = py::none(), py::arg("quiet") = false,
+      "Continues a run from its newest checkpoint (tendril resume), GIL released.");
 }
 
 }  // namespace tendril::python

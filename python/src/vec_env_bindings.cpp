@@ -1,6 +1,6 @@
 // N tendril environments stepped in C++ (ThreadedVecEnv, GIL released) as the extension's
 // `VecEnv`: batches come back as read-only NumPy views of the C++ buffers, valid until the next
-// reset or step.
+// reset or step, or (copy=True) as copies made before another thread's call can refill them.
 #include <pybind11/stl.h>
 
 #include <memory>
@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "conversions.hpp"
+#include "object_lock.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/vector/threaded_vec_env.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -19,12 +20,12 @@ namespace {
 
 class PyVecEnv {
  public:
-  PyVecEnv(const std::string& id, int num_envs, const std::string& params_json, int num_threads)
+  PyVecEnv(const std::string& id, const py::handle& num_envs_value, const std::string& params_json,
+           const py::handle& num_threads_value)
       : who_("tendril vector env " + id + " step") {
-    require(num_envs >= 1, "num_envs must be at least 1, got " + std::to_string(num_envs),
-            "tendril.make_vec('" + id + "')");
-    require(num_threads >= 1, "num_threads must be at least 1, got " + std::to_string(num_threads),
-            "tendril.make_vec('" + id + "')");
+    const std::string where = "tendril.make_vec('" + id + "')";
+    const int num_envs = count_from_python(num_envs_value, "num_envs", where);
+    const int num_threads = count_from_python(num_threads_value, "num_threads", where);
     rl::VecEnvOptions options;
     options.id = id;
     options.params = params_from_json(params_json, "tendril.make_vec('" + id + "') params");
@@ -34,8 +35,11 @@ class PyVecEnv {
   }
 
   envs::VecEnv& env() { return *env_; }
+  ObjectLock& lock() { return lock_; }
 
-  const envs::BatchMatrix& reset(std::optional<uint64_t> seed) {
+  const envs::BatchMatrix& reset(const py::handle& seed_value) {
+    const std::optional<uint64_t> seed = seed_from_python(
+        seed_value, static_cast<uint64_t>(env_->num_envs()), "tendril vector env reset");
     const envs::BatchMatrix* observations = nullptr;
     {
       py::gil_scoped_release release;
@@ -72,9 +76,13 @@ class PyVecEnv {
   std::unique_ptr<envs::VecEnv> env_;
   envs::BatchMatrix actions_;
   bool ready_ = false;
+  // One call at a time from Python threads (object_lock.hpp): held while a call steps and while
+  // it turns the batches and infos into Python objects.
+  ObjectLock lock_;
 };
 
-py::array batch_view(const envs::BatchMatrix& batch, py::handle owner) {
+py::array batch_array(const envs::BatchMatrix& batch, py::handle owner, bool copy) {
+  if (copy) return float_copy(batch.data(), {batch.rows(), batch.cols()});
   return readonly_view(batch.data(), {batch.rows(), batch.cols()}, owner);
 }
 
@@ -83,8 +91,9 @@ py::array batch_view(const envs::BatchMatrix& batch, py::handle owner) {
 void bind_vec_env(py::module_& m) {
   py::class_<PyVecEnv>(m, "VecEnv",
                        "N copies of a registered environment with auto-reset, stepped in C++.")
-      .def(py::init<const std::string&, int, const std::string&, int>(), py::arg("id"),
-           py::arg("num_envs"), py::arg("params_json") = "{}", py::arg("num_threads") = 1)
+      .def(py::init<const std::string&, const py::handle&, const std::string&, const py::handle&>(),
+           py::arg("id"), py::arg("num_envs"), py::arg("params_json") = "{}",
+           py::arg("num_threads") = 1)
       .def_property_readonly("num_envs", [](PyVecEnv& self) { return self.env().num_envs(); })
       .def_property_readonly(
           "observation_space",
@@ -93,17 +102,22 @@ void bind_vec_env(py::module_& m) {
           "action_space", [](PyVecEnv& self) { return space_to_dict(self.env().action_space()); })
       .def(
           "reset",
-          [](py::object self, std::optional<uint64_t> seed) {
-            return batch_view(self.cast<PyVecEnv&>().reset(seed), self);
+          [](py::object self, const py::handle& seed, bool copy) {
+            PyVecEnv& env = self.cast<PyVecEnv&>();
+            const auto lock = env.lock().acquire();
+            return batch_array(env.reset(seed), self, copy);
           },
-          py::arg("seed") = py::none(),
+          py::arg("seed") = py::none(), py::arg("copy") = false,
           "Resets env i with seed + i; returns the (num_envs, obs size) observations.")
       .def(
           "step",
-          [](py::object self, const py::handle& actions) {
-            const envs::VecStep& step = self.cast<PyVecEnv&>().step(actions);
+          [](py::object self, const py::handle& actions, bool copy) {
+            PyVecEnv& env = self.cast<PyVecEnv&>();
+            const auto lock = env.lock().acquire();
+            const envs::VecStep& step = env.step(actions);
             const auto n = static_cast<py::ssize_t>(step.rewards.size());
-            py::array rewards = readonly_view(step.rewards.data(), {n}, self);
+            py::array rewards = copy ? float_copy(step.rewards.data(), {n})
+                                     : readonly_view(step.rewards.data(), {n}, self);
             py::array_t<bool> terminated(n), truncated(n);
             py::list infos;
             for (py::ssize_t i = 0; i < n; ++i) {
@@ -111,15 +125,17 @@ void bind_vec_env(py::module_& m) {
               truncated.mutable_data()[i] = step.truncated[i] != 0;
               infos.append(info_to_dict(step.infos[i]));
             }
-            return py::make_tuple(batch_view(step.observations, self), rewards, terminated,
-                                  truncated, batch_view(step.final_observations, self), infos);
+            return py::make_tuple(batch_array(step.observations, self, copy), rewards, terminated,
+                                  truncated, batch_array(step.final_observations, self, copy),
+                                  infos);
           },
-          py::arg("actions"),
+          py::arg("actions"), py::arg("copy") = false,
           "Steps every env; returns (observations, rewards, terminated, truncated, "
           "final_observations, infos), auto-resetting finished episodes.")
       .def(
           "scene",
           [](PyVecEnv& self, int i) -> py::object {
+            const auto lock = self.lock().acquire();
             Scene scene;
             if (!self.member(i).describe_scene(scene)) return py::none();
             return scene_to_dict(scene);

@@ -8,11 +8,11 @@ their export to C and ONNX) and the trainer.
     policy = tendril.load("runs/elastica_tracking3d_ppo-<stamp>")
     tendril.record_video("Elastica/Tracking3D-v0", policy, "arm.mp4")
 """
-from ._tendril import Error
+from ._tendril import Error, numerics
 from ._version import __version__
 from .env import TendrilEnv, gymnasium_id, make, register_with_gymnasium, registry
 from .policy import Policy, load
-from .training import train
+from .training import resume, train
 from .vector import VecEnv, make_vec
 from .video import episode_video, record_video
 
@@ -34,6 +34,6 @@ def export_onnx(policy, out, best=False):
 
 __all__ = ["Error", "Policy", "TendrilEnv", "VecEnv", "__version__", "episode_video",
            "export_c_header", "export_onnx", "gymnasium_id", "load", "make", "make_vec",
-           "record_video", "registry", "train"]
+           "numerics", "record_video", "registry", "resume", "train"]
 
 register_with_gymnasium()

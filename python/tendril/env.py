@@ -1,6 +1,7 @@
 """One tendril environment as a gymnasium.Env (a plain object with the same methods when
 Gymnasium is not installed)."""
 import json
+import operator
 
 from . import _tendril
 from .spaces import HAVE_GYMNASIUM, from_native
@@ -20,6 +21,14 @@ def params_json(env_id, params):
     except (TypeError, ValueError) as error:
         raise _tendril.Error(f"tendril env {env_id}: parameters must be numbers, strings, lists "
                              f"and dicts of them ({error})") from None
+
+
+def _is_integer(value):
+    try:
+        operator.index(value)
+        return True
+    except TypeError:
+        return False
 
 
 class TendrilEnv(_Base):
@@ -57,11 +66,12 @@ class TendrilEnv(_Base):
         if options:
             raise _tendril.Error(f"tendril env {self.env_id}: reset takes no options, got "
                                  f"{sorted(options)}")
-        if seed is not None and (int(seed) != seed or seed < 0):
-            raise _tendril.Error(f"tendril env {self.env_id}: the seed must be an integer >= 0, "
-                                 f"got {seed!r}")
+        if seed is not None and (isinstance(seed, bool) or not _is_integer(seed)
+                                 or not 0 <= int(seed) < 2**64):
+            raise _tendril.Error(f"tendril env {self.env_id}: the seed must be an integer in "
+                                 f"[0, 2**64 - 1], got {seed!r}")
         if HAVE_GYMNASIUM:
-            super().reset(seed=seed)  # seeds self.np_random, as Gymnasium expects
+            super().reset(seed=None if seed is None else int(seed))  # seeds self.np_random
         observation = self._native.reset(None if seed is None else int(seed))
         if self.render_mode is not None and not self._native.has_scene:
             raise _tendril.Error(f"tendril env {self.env_id} describes no scene to draw, so it "

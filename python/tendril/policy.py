@@ -9,7 +9,7 @@ from .spaces import from_native
 
 class Policy:
     """A trained policy: network and the observation normalization it was trained behind, so it
-    acts on the environment's raw observations. Computes in C++ what `tendril eval` computes."""
+    acts on the environment's raw observations. Computes in C++ what `tendril run` computes."""
 
     def __init__(self, path, best=False, seed=0):
         self._native = _tendril.Policy(os.fspath(path), best, int(seed))

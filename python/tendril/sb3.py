@@ -32,7 +32,7 @@ class SB3VecEnv(_SB3VecEnv):
             seed = self._seeds[0]
             if seed is None or list(self._seeds) != [seed + i for i in range(self.num_envs)]:
                 raise _tendril.Error("per-env seeds must be consecutive (env i gets seed + i)")
-        observations = self.venv.native.reset(seed).copy()
+        observations = self.venv.native.reset(seed, True)
         self._reset_seeds()
         self._reset_options()
         return observations
@@ -41,17 +41,18 @@ class SB3VecEnv(_SB3VecEnv):
         self._actions = actions
 
     def step_wait(self):
+        # Copies, made before another thread's call could refill the buffers (SB3 keeps them).
         observations, rewards, terminated, truncated, final, infos = self.venv.native.step(
-            self._actions)
+            self._actions, True)
         dones = terminated | truncated
         for i in np.flatnonzero(dones):
             info = infos[i]
-            info["terminal_observation"] = final[i].copy()
+            info["terminal_observation"] = final[i]
             info["TimeLimit.truncated"] = bool(truncated[i] and not terminated[i])
             if "episode_return" in info:
                 info["episode"] = {"r": info["episode_return"], "l": int(info["episode_length"]),
                                    "t": round(time.time() - self._episode_start, 6)}
-        return observations.copy(), rewards.copy(), dones, infos
+        return observations, rewards, dones, infos
 
     def close(self):
         self.venv.close()

@@ -21,11 +21,15 @@ class VecEnv(_Base):
 
     With copy=False (the default) observations and rewards are read-only NumPy views of the C++
     buffers, valid until the next reset or step: copy them to keep them. copy=True returns
-    copies, as Gymnasium's SyncVectorEnv does."""
+    copies, as Gymnasium's SyncVectorEnv does.
+
+    Calls from several threads into one VecEnv run one at a time; a view is refilled by the next
+    call from any thread, so threads sharing one VecEnv want copy=True (the copies are made before
+    another call can start)."""
 
     def __init__(self, env_id, num_envs, *, num_threads=1, copy=False, **params):
-        self._native = _tendril.VecEnv(env_id, int(num_envs), params_json(env_id, params),
-                                       int(num_threads))
+        self._native = _tendril.VecEnv(env_id, num_envs, params_json(env_id, params), num_threads)
+        num_envs = self._native.num_envs
         self.env_id = env_id
         self.copy = copy
         single_observation = from_native(self._native.observation_space)
@@ -54,13 +58,11 @@ class VecEnv(_Base):
             if list(seed) != [seed[0] + i for i in range(self.num_envs)]:
                 raise _tendril.Error("per-env seeds must be consecutive (env i gets seed + i)")
             seed = seed[0]
-        observations = self._native.reset(None if seed is None else int(seed))
-        return (observations.copy() if self.copy else observations), {}
+        return self._native.reset(seed, self.copy), {}
 
     def step(self, actions):
-        observations, rewards, terminated, truncated, final, infos = self._native.step(actions)
-        if self.copy:
-            observations, rewards = observations.copy(), rewards.copy()
+        observations, rewards, terminated, truncated, final, infos = self._native.step(
+            actions, self.copy)
         return observations, rewards, terminated, truncated, self._gymnasium_info(
             infos, terminated | truncated, final)
 

@@ -1,5 +1,5 @@
 """Videos of environments: a policy's episodes as they are played now (record_video), or an
-episode recorded earlier by `tendril record` (episode_video). Frames come from tendril's
+episode recorded earlier by `tendril run RUN --record DIR` (episode_video). Frames come from tendril's
 software rasterizer; Debian's ffmpeg encodes them (.mp4, .webm or .gif)."""
 import os
 
@@ -76,7 +76,7 @@ def record_video(env, policy, path, *, episodes=1, seed=0, deterministic=True, s
 
 def episode_video(episode, path, *, size=(960, 540), speed=0.0, fps=0.0, max_fps=30.0,
                   trails=True):
-    """Writes a video of a recorded episode file (.tep, `tendril record`): one fixed view of the
+    """Writes a video of a recorded episode file (.tep, `tendril run --record`): one fixed view of the
     whole episode, the arm tip's and targets' paths drawn up to each moment. speed 0: one frame
     per step at the recording's rate up to max_fps (slow motion for fast environments); speed
     > 0: that many episode seconds per video second. Returns the number of frames."""

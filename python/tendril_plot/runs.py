@@ -81,7 +81,7 @@ def seed_group(name, parent=""):
     "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" → "ppo_case1", "seed_3-tau_0.01" →
     "tau_0.01"; a name that is only a seed ("seed_42") gives `parent`, the name of the directory
     holding the run (a sweep over seeds alone), or "seeds". Runs differing only by seed share a group. The same rule
-    as `tendril sweep`'s summary (rl::seed_group) and the dashboard's (web/src/aggregate.js)."""
+    as the sweep summary's (rl::seed_group) and the dashboard's (web/src/aggregate.js)."""
     stripped = re.sub(r"(^|[-_])seed_?\d+", "", name, count=1, flags=re.IGNORECASE)
     return stripped.strip("-_") or parent or "seeds"
 

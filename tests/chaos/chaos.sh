@@ -46,17 +46,17 @@ finish() {  # <run> [config args for a restart]
   for _ in 1 2 3; do
     [ -f "$run/model.policy" ] && return 0
     if compgen -G "$run/checkpoints/step_*.ckpt" >/dev/null; then
-      "$T" train --resume "$run" --quiet >"$run.log" 2>&1 || { fail "$run: resume rc=$?: $(tail -2 "$run.log")"; return 1; }
+      "$T" resume "$run" --quiet >"$run.log" 2>&1 || { fail "$run: resume rc=$?: $(tail -2 "$run.log")"; return 1; }
     else
       rm -rf "$run"  # killed before its first checkpoint: nothing to resume
-      "$T" train "$PPO" "${SET[@]}" --out "$run" --quiet >"$run.log" 2>&1 || { fail "$run: restart failed"; return 1; }
+      "$T" train "$PPO" "${SET[@]}" -o "$run" --quiet >"$run.log" 2>&1 || { fail "$run: restart failed"; return 1; }
     fi
   done
 }
 reference() {  # <dir> [extra args]
   local dir=$1
   shift
-  "$T" train "$PPO" "${SET[@]}" "$@" --out "$dir" --quiet >/dev/null 2>&1 || { echo "reference run failed"; exit 1; }
+  "$T" train "$PPO" "${SET[@]}" "$@" -o "$dir" --quiet >/dev/null 2>&1 || { echo "reference run failed"; exit 1; }
 }
 
 if [ "$SCENARIO" == kill9_sac ]; then
@@ -73,7 +73,7 @@ kill9 | kill9_sac)
   stale=0
   for trial in $(seq "$TRIALS"); do
     run=k$trial
-    "$T" train "$PPO" "${SET[@]}" --out "$run" --quiet >/dev/null 2>&1 &
+    "$T" train "$PPO" "${SET[@]}" -o "$run" --quiet >/dev/null 2>&1 &
     pid=$!
     sleep "$(printf '0.%03d' $((RANDOM % 1000)))"
     [ $((RANDOM % 3)) -eq 0 ] && sleep 2
@@ -82,7 +82,7 @@ kill9 | kill9_sac)
     echo "trial $trial: killed with checkpoints up to $(ls "$run/checkpoints" 2>/dev/null | sort -t_ -k2 -n | tail -1)"
     # A second kill during the resume, in half of the trials.
     if [ $((trial % 2)) -eq 0 ] && compgen -G "$run/checkpoints/step_*.ckpt" >/dev/null; then
-      "$T" train --resume "$run" --quiet >/dev/null 2>&1 &
+      "$T" resume "$run" --quiet >/dev/null 2>&1 &
       pid=$!
       sleep "$(printf '0.%03d' $((RANDOM % 1000)))"
       kill -9 "$pid" 2>/dev/null
@@ -104,7 +104,7 @@ killtmp)
   caught=0
   for trial in $(seq "$TRIALS"); do
     run=t$trial
-    "$T" train "$PPO" "${SET[@]}" --out "$run" --quiet >/dev/null 2>&1 &
+    "$T" train "$PPO" "${SET[@]}" -o "$run" --quiet >/dev/null 2>&1 &
     pid=$!
     skip=$((RANDOM % 6))
     while kill -0 "$pid" 2>/dev/null; do
@@ -130,7 +130,7 @@ signals)
     signal=$([ $((trial % 2)) -eq 0 ] && echo TERM || echo INT)
     expected=$([ "$signal" == TERM ] && echo 143 || echo 130)
     run=s$trial
-    "$T" train "$PPO" "${SET[@]}" --out "$run" --quiet >"$run.out" 2>&1 &
+    "$T" train "$PPO" "${SET[@]}" -o "$run" --quiet >"$run.out" 2>&1 &
     pid=$!
     wait_for "$run/checkpoints/step_*.ckpt"
     sleep "$(printf '0.%03d' $((RANDOM % 1000)))"
@@ -142,14 +142,14 @@ signals)
       continue
     fi
     [ "$rc" -eq "$expected" ] || fail "$run: SIG$signal gave rc=$rc, not $expected"
-    grep -q "continue with:  tendril train --resume $run" "$run.out" || fail "$run: no resume hint"
-    "$T" train --resume "$run" --quiet >/dev/null 2>&1 || fail "$run: resume failed"
+    grep -q "continue with:  tendril resume $run" "$run.out" || fail "$run: no resume hint"
+    "$T" resume "$run" --quiet >/dev/null 2>&1 || fail "$run: resume failed"
     same_run "$run" ref
   done
   ;;
 corrupt)
   reference ref
-  "$T" train "$PPO" "${SET[@]}" --out paused --stop-at 100000 --quiet >/dev/null 2>&1
+  "$T" train "$PPO" "${SET[@]}" -o paused --stop-at 100000 --quiet >/dev/null 2>&1
   newest=$(ls paused/checkpoints | sort -t_ -k2 -n | tail -1)
   for trial in $(seq "$TRIALS"); do
     run=c$trial
@@ -164,7 +164,7 @@ corrupt)
       3) : >"$file" ;;                                                           # empty
     esac
     cmp -s "$file" "paused/checkpoints/$newest" && { echo "trial $trial: no change, skipped"; continue; }
-    "$T" train --resume "$run" --quiet >"$run.log" 2>&1 || fail "$run: resume rc=$?: $(tail -1 "$run.log")"
+    "$T" resume "$run" --quiet >"$run.log" 2>&1 || fail "$run: resume rc=$?: $(tail -1 "$run.log")"
     grep -q "skipped .*$newest" "$run.log" || fail "$run: the corrupt checkpoint was not named"
     [ -f "$file.corrupt" ] || fail "$run: the corrupt checkpoint was not kept aside"
     same_run "$run" ref
@@ -180,7 +180,7 @@ corrupt)
       printf '\x01' | dd of="$file" bs=1 seek=$((RANDOM * size / 32768)) conv=notrunc 2>/dev/null
     fi
     cmp -s "$file" ref/model.policy && continue
-    "$T" eval m$trial --episodes 1 >m$trial.log 2>&1
+    "$T" run m$trial --episodes 1 >m$trial.log 2>&1
     rc=$?
     [ "$rc" -eq 1 ] || fail "m$trial: eval of a corrupt model gave rc=$rc: $(tail -1 m$trial.log)"
   done
@@ -194,7 +194,7 @@ diskfull)
   reference ref
   # Full from the start: a clear error naming a file, nothing reported finished.
   head -c 2000000 /dev/zero >disk/filler 2>/dev/null
-  "$T" train "$PPO" "${SET[@]}" --out disk/run --quiet >full.log 2>&1
+  "$T" train "$PPO" "${SET[@]}" -o disk/run --quiet >full.log 2>&1
   rc=$?
   [ "$rc" -eq 1 ] || fail "full disk at start: rc=$rc"
   grep -q "No space left on device\|no space left" full.log || fail "full disk at start: $(cat full.log)"
@@ -202,13 +202,13 @@ diskfull)
   rm -rf disk/run
   # Full in the middle (the checkpoints fill 1 MiB): the error names the file; once space is
   # back, the run resumes to the uninterrupted result.
-  "$T" train "$PPO" "${SET[@]}" --out disk/run --quiet >mid.log 2>&1
+  "$T" train "$PPO" "${SET[@]}" -o disk/run --quiet >mid.log 2>&1
   rc=$?
   [ "$rc" -eq 1 ] || fail "full disk mid-run: rc=$rc"
   grep -q "disk/run/.*No space left on device" mid.log || fail "full disk mid-run: $(cat mid.log)"
   [ -f disk/run/model.policy ] && fail "full disk mid-run: a model was written"
   mount -o remount,size=64m disk
-  "$T" train --resume disk/run --quiet >resume.log 2>&1 || fail "resume after the disk filled: $(tail -2 resume.log)"
+  "$T" resume disk/run --quiet >resume.log 2>&1 || fail "resume after the disk filled: $(tail -2 resume.log)"
   same_run disk/run ref
   # A config.yaml was never left empty.
   [ -s disk/run/config.yaml ] || fail "empty config.yaml"
@@ -221,17 +221,17 @@ concurrent)
   for trial in $(seq "$TRIALS"); do
     # Two resumes of one paused run.
     run=r$trial
-    "$T" train "$PPO" "${SET[@]}" --out "$run" --stop-at 40000 --quiet >/dev/null 2>&1
-    "$T" train --resume "$run" --quiet >"$run.a" 2>&1 & a=$!
-    "$T" train --resume "$run" --quiet >"$run.b" 2>&1 & b=$!
+    "$T" train "$PPO" "${SET[@]}" -o "$run" --stop-at 40000 --quiet >/dev/null 2>&1
+    "$T" resume "$run" --quiet >"$run.a" 2>&1 & a=$!
+    "$T" resume "$run" --quiet >"$run.b" 2>&1 & b=$!
     wait $a; rca=$?; wait $b; rcb=$?
     [ $((rca + rcb)) -eq 1 ] || fail "$run: two resumes gave rc $rca and $rcb"
     grep -q "in use by process [0-9]\|has finished" "$run.a" "$run.b" || fail "$run: no clear refusal"
     same_run "$run" ref0
     # Two new runs, seeds 0 and 5, into one directory.
     run=n$trial
-    "$T" train "$PPO" "${SET[@]}" --set seed=0 --out "$run" --quiet >"$run.a" 2>&1 & a=$!
-    "$T" train "$PPO" "${SET[@]}" --set seed=5 --out "$run" --quiet >"$run.b" 2>&1 & b=$!
+    "$T" train "$PPO" "${SET[@]}" --set seed=0 -o "$run" --quiet >"$run.a" 2>&1 & a=$!
+    "$T" train "$PPO" "${SET[@]}" --set seed=5 -o "$run" --quiet >"$run.b" 2>&1 & b=$!
     wait $a; rca=$?; wait $b; rcb=$?
     [ $((rca + rcb)) -eq 1 ] || fail "$run: two new runs gave rc $rca and $rcb"
     winner=$([ $rca -eq 0 ] && echo 0 || echo 5)
@@ -253,7 +253,7 @@ YAML
   restarted=0
   for trial in $(seq "$TRIALS"); do
     rm -rf sw
-    "$T" sweep sweep.yaml --quiet >/dev/null 2>&1 &
+    "$T" sweep run sweep.yaml --quiet >/dev/null 2>&1 &
     pid=$!
     wait_for "sw/*/config.yaml"
     [ $((trial % 2)) -eq 0 ] && sleep "$(printf '0.%03d' $((RANDOM % 1000)))"
@@ -268,7 +268,7 @@ YAML
       kill -9 "$pid" 2>/dev/null
       wait "$pid" 2>/dev/null
     fi
-    "$T" sweep sweep.yaml --quiet >sweep.log 2>&1 || fail "sweep trial $trial: rerun rc=$?: $(tail -2 sweep.log)"
+    "$T" sweep run sweep.yaml --quiet >sweep.log 2>&1 || fail "sweep trial $trial: rerun rc=$?: $(tail -2 sweep.log)"
     [ "$(ls sw/*/model.policy 2>/dev/null | wc -l)" -eq 2 ] || fail "sweep trial $trial: runs missing"
     grep -q "restarting" sweep.log && restarted=$((restarted + 1))
   done
@@ -283,30 +283,37 @@ inputs)
     local rc=$?
     [ "$rc" -eq 1 ] && grep -q -- "$pattern" err.log || fail "'$*' gave rc=$rc: $(head -c 300 err.log)"
   }
+  expect_usage_error() {  # <pattern> <command...>: a usage error (status 2) naming the problem
+    local pattern=$1
+    shift
+    timeout 20 "$@" >err.log 2>&1
+    local rc=$?
+    [ "$rc" -eq 2 ] && grep -q -- "$pattern" err.log || fail "'$*' gave rc=$rc: $(head -c 300 err.log)"
+  }
   mkdir adir
-  expect_error "not a regular file" "$T" train /dev/zero --out o1
-  expect_error "is a directory" "$T" train adir --out o2
+  expect_error "not a regular file" "$T" train /dev/zero -o o1
+  expect_error "is a directory" "$T" train adir -o o2
   head -c 3000000 /dev/zero | tr '\0' '#' >big.yaml
-  expect_error "larger than 1 MiB" "$T" train big.yaml --out o3
-  expect_error "at most 65536" "$T" train "$PPO" --set "seed=$(head -c 100000 /dev/zero | tr '\0' 1)" --out o4
-  expect_error "algo.buffer_size" "$T" train "$CONFIGS/sac/pendulum.yaml" --set algo.buffer_size=1000000000000 --out o5
-  expect_error "65536 units" "$T" train "$CONFIGS/sac/pendulum.yaml" --set "algo.net_arch=[100000,100000]" --out o6
-  expect_error "learner_threads" "$T" train "$CONFIGS/sac/pendulum.yaml" --set algo.learner_threads=1000 --out o7
-  expect_error "needs a value" "$T" train "$PPO" --out ""
-  expect_error "--stop-at expects" "$T" train "$PPO" --stop-at -5 --out o8
-  expect_error "--stop-at expects" "$T" train "$PPO" --stop-at 12x --out o9
+  expect_error "larger than 1 MiB" "$T" train big.yaml -o o3
+  expect_error "at most 65536" "$T" train "$PPO" --set "seed=$(head -c 100000 /dev/zero | tr '\0' 1)" -o o4
+  expect_error "algo.buffer_size" "$T" train "$CONFIGS/sac/pendulum.yaml" --set algo.buffer_size=1000000000000 -o o5
+  expect_error "65536 units" "$T" train "$CONFIGS/sac/pendulum.yaml" --set "algo.net_arch=[100000,100000]" -o o6
+  expect_error "learner_threads" "$T" train "$CONFIGS/sac/pendulum.yaml" --set algo.learner_threads=1000 -o o7
+  expect_usage_error "needs a value" "$T" train "$PPO" -o ""
+  expect_usage_error "--stop-at expects" "$T" train "$PPO" --stop-at -5 -o o8
+  expect_usage_error "--stop-at expects" "$T" train "$PPO" --stop-at 12x -o o9
   reference ref --set n_timesteps=8192
-  expect_error "--episodes expects" "$T" eval ref --episodes 3x
-  expect_error "--seed expects" "$T" eval ref --seed -1
-  expect_error "--seed expects" "$T" eval ref --seed 1.5
-  expect_error "has finished" "$T" train --resume ref
+  expect_usage_error "--episodes expects" "$T" run ref --episodes 3x
+  expect_usage_error "--seed expects" "$T" run ref --seed -1
+  expect_usage_error "--seed expects" "$T" run ref --seed 1.5
+  expect_error "has finished" "$T" resume ref
   # An allocation that fails names the sizes that decide it.
   expect_error "out of memory.*algo.buffer_size = 100000000" bash -c \
-    "ulimit -v 2000000; exec '$T' train '$CONFIGS/sac/pendulum.yaml' --set algo.buffer_size=100000000 --out o10"
+    "ulimit -v 2000000; exec '$T' train '$CONFIGS/sac/pendulum.yaml' --set algo.buffer_size=100000000 -o o10"
   # eval.csv that cannot be written (here a directory in its place): an error, not lost rows.
-  "$T" train "$PPO" "${SET[@]}" --out unwritable --stop-at 40000 --quiet >/dev/null 2>&1
+  "$T" train "$PPO" "${SET[@]}" -o unwritable --stop-at 40000 --quiet >/dev/null 2>&1
   rm unwritable/eval.csv && mkdir unwritable/eval.csv
-  expect_error "eval.csv" "$T" train --resume unwritable --quiet
+  expect_error "eval.csv" "$T" resume unwritable --quiet
   [ -e o1 ] || [ -e o2 ] || [ -e o3 ] && fail "a refused run left a directory"
   ;;
 *)

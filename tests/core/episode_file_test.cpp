@@ -183,6 +183,49 @@ TEST_F(EpisodeFileTest, PrimitivesThatDoNotChangeAreStoredOnce) {
   for (const EpisodeFrame& frame : episode.frames) expect_same_frame(frame, frame_at(1));
 }
 
+// Reading some frames gives exactly those frames of the whole reading, even when the ones
+// before them changed primitives that the chosen ones leave unchanged; the outline counts every
+// frame and its reward without building any.
+TEST_F(EpisodeFileTest, ChosenFramesAndTheOutlineAgreeWithTheWholeReading) {
+  const fs::path file = directory_ / "mixed.tep";
+  {
+    EpisodeWriter writer(file, {{"env", "Test/Scene-v0"}}, 2);
+    for (int k = 0; k < 12; ++k) writer.write(frame_at(k % 3 == 2 ? k - 1 : k));  // repeats
+    writer.finish();
+  }
+  const Episode whole = read_episode(file);
+  const std::vector<int64_t> chosen = {0, 2, 3, 8, 11};
+  const PartialEpisode some = read_partial_episode(file, chosen);
+  EXPECT_TRUE(some.problem.empty());
+  ASSERT_EQ(some.episode.frames.size(), chosen.size());
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    expect_same_frame(some.episode.frames[i], whole.frames[static_cast<std::size_t>(chosen[i])]);
+  }
+  EXPECT_TRUE(read_partial_episode(file, {}).episode.frames.empty());
+
+  const EpisodeOutline outline = outline_episode(file);
+  EXPECT_EQ(outline.metadata, whole.metadata);
+  EXPECT_EQ(outline.action_size, 2);
+  ASSERT_EQ(outline.frames(), 12);
+  for (std::size_t k = 0; k < 12; ++k) EXPECT_EQ(outline.rewards[k], whole.frames[k].reward);
+  ASSERT_TRUE(outline.summary.has_value());
+  EXPECT_EQ(outline.summary->episode_return, whole.summary->episode_return);
+  EXPECT_TRUE(outline.problem.empty());
+  // The frame estimate covers what a frame holds: 7 primitives' doubles and more.
+  EXPECT_GT(outline.frame_bytes, sizeof(double) * (19 + 4 + 7 + 10 + 6 + 9 + 12));
+  EXPECT_LT(outline.frame_bytes, 8192u);
+
+  // A cut file: the outline says what read_partial_episode says.
+  const std::string bytes = read_file(file);
+  write_raw(directory_ / "cut.tep", bytes.substr(0, bytes.size() * 2 / 3));
+  const PartialEpisode cut = read_partial_episode(directory_ / "cut.tep");
+  const EpisodeOutline cut_outline = outline_episode(directory_ / "cut.tep");
+  EXPECT_EQ(cut_outline.frames(), static_cast<int64_t>(cut.episode.frames.size()));
+  EXPECT_EQ(cut_outline.problem, cut.problem);
+  EXPECT_EQ(cut_outline.truncated, cut.truncated);
+  EXPECT_FALSE(cut_outline.summary.has_value());
+}
+
 TEST_F(EpisodeFileTest, ASceneThatChangesItsStructureStartsANewLayout) {
   const fs::path file = directory_ / "layouts.tep";
   std::vector<EpisodeFrame> frames = {frame_at(0), frame_at(1), frame_at(2), frame_at(3)};

@@ -89,14 +89,57 @@ TEST_F(CsvSliceTest, AFileWithoutACompleteHeaderHasNoColumnsYet) {
   EXPECT_EQ(half.next_offset, 0u);
 }
 
+// A slice reads a page of lines and lists the first problems with a count of all: a long
+// malformed file gives answers of bounded size, and the pages together give every row once.
+TEST_F(CsvSliceTest, LongFilesComeInPagesWithTheFirstProblemsListed) {
+  std::string text = "t,r\n";
+  for (int i = 0; i < 1000; ++i) {
+    text += std::to_string(i) + "," + std::to_string(2 * i) + "\n";
+    if (i % 4 == 0) text += "bad line\n";
+    if (i % 10 == 0) text += "\n";
+  }
+  const fs::path file = write(text);
+  const CsvSliceLimits limits{.max_lines = 300, .max_problems = 7};
+  std::vector<std::vector<double>> rows;
+  int64_t problems = 0;
+  uint64_t offset = 0;
+  int pages = 0;
+  while (true) {
+    const CsvSlice slice = read_csv_slice(file, offset, limits);
+    ++pages;
+    EXPECT_LE(slice.problems.size(), 7u);
+    EXPECT_LE(slice.rows.size() + static_cast<std::size_t>(slice.problem_count), 300u);
+    if (slice.problem_count > 0) {
+      EXPECT_EQ(slice.problems.size(), std::min<std::size_t>(7, slice.problem_count));
+    }
+    EXPECT_FALSE(slice.restarted);
+    rows.insert(rows.end(), slice.rows.begin(), slice.rows.end());
+    problems += slice.problem_count;
+    offset = slice.next_offset;
+    if (!slice.more) break;
+    ASSERT_LT(pages, 20);
+  }
+  EXPECT_EQ(pages, 5);  // 1,000 rows + 250 malformed + 100 blank lines, 300 per page
+  EXPECT_EQ(problems, 250);
+  ASSERT_EQ(rows.size(), 1000u);
+  for (int i = 0; i < 1000; ++i) EXPECT_EQ(rows[i], (std::vector<double>{1.0 * i, 2.0 * i}));
+  EXPECT_EQ(offset, text.size());
+}
+
 TEST_F(CsvSliceTest, MissingAndOversizedFilesAreErrors) {
   EXPECT_NE(testing::error_message([&] {
               read_csv_slice(directory_ / "none.csv", 0);
             }).find("cannot read"),
             std::string::npos);
   const fs::path file = write("t\n1\n2\n");
-  EXPECT_NE(testing::error_message([&] { read_csv_slice(file, 0, 4); }).find("too large"),
-            std::string::npos);
+  EXPECT_NE(
+      testing::error_message([&] { read_csv_slice(file, 0, {.max_bytes = 4}); }).find("too large"),
+      std::string::npos);
+  std::string wide = "c0";
+  for (int i = 1; i <= 10000; ++i) wide += ",c" + std::to_string(i);
+  EXPECT_NE(
+      testing::error_message([&] { read_csv_slice(write(wide + "\n"), 0); }).find("10001 columns"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -11,9 +11,9 @@ for seed in 0 1 2; do
   "$tendril" train "$source/configs/elastica/tracking3d_ppo_quick.yaml" --quiet \
     --set seed=$seed --set n_timesteps=24576 --set eval.freq=8192 --set eval.episodes=2 \
     --set checkpoint_freq=0 --set env.params.max_episode_steps=200 \
-    --out "$out/sweep/ppo_seed$seed"
+    -o "$out/sweep/ppo_seed$seed"
 done
-"$tendril" record "$out/sweep/ppo_seed0" --episodes 1
+"$tendril" run "$out/sweep/ppo_seed0" --episodes 1 --record "$out/sweep/ppo_seed0/episodes"
 "$sample_episodes" "$out/sweep/ppo_seed0/episodes"
 
 # Logs written elsewhere (Stable-Baselines3's own progress.csv) whose returns span a narrow range
@@ -27,7 +27,7 @@ awk 'BEGIN {
   }
 }' > "$out/external/sb3_pendulum/progress.csv"
 
-# A finished model fit (tendril dynamics fit's files: progress.csv by epoch, evaluation.csv).
+# A finished model fit (tendril model fit's files: progress.csv by epoch, evaluation.csv).
 fit="$out/fits/sma_stiff_lstm"
 mkdir -p "$fit"
 cp "$source/configs/dynamics/sma_stiff_lstm.yaml" "$fit/config.yaml"
@@ -48,11 +48,11 @@ rollout,60,angular velocity,deg/s,9.6,2761,12
 CSV
 
 # A sweep summary beside the seeds (what `tendril sweep` writes into <output>/summary/): the
-# runs' table from `tendril summarize` and their curves from `tendril plot`.
+# runs' table from `tendril report` and their curves from `tendril plot`.
 mkdir -p "$out/sweep/summary"
 "$tendril" plot curves "$out/sweep" --out "$out/sweep/summary/training.png" --size 6.4,3.6 --dpi 80
 {
-  "$tendril" summarize "$out/sweep"
+  "$tendril" report "$out/sweep"
   echo
   echo "![Mean training return of the three seeds ± std](training.png)"
 } > "$out/sweep/summary/summary.md"

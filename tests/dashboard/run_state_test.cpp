@@ -31,10 +31,10 @@ class RunStateTest : public testing::ScratchDirectoryTest {
     return run;
   }
 
-  RunState state_of(const fs::path& run) {
+  RunState state_of(const fs::path& run) const {
     std::optional<Config> config;
     if (fs::exists(run / "config.yaml")) config = Config::load_file(run / "config.yaml");
-    return read_run_state(run, config ? &*config : nullptr, held_locks());
+    return read_run_state(ServedRoot(directory_), run, config ? &*config : nullptr, held_locks());
   }
 };
 

@@ -55,6 +55,34 @@ TEST_F(ServedRootTest, RefusesEveryWayOut) {
             fs::canonical(directory_ / "root" / "run" / "progress.csv"));
 }
 
+// Paths the server derives itself (a run's config.yaml, episodes/) pass the same check.
+TEST_F(ServedRootTest, DerivedPathsAreContainedLikeRequestedOnes) {
+  const ServedRoot root(directory_ / "root");
+  const fs::path run = fs::canonical(directory_ / "root" / "run");
+  EXPECT_EQ(root.served_file(run / "progress.csv"), run / "progress.csv");
+  EXPECT_FALSE(root.served_file(run / "episodes").has_value());  // a directory
+  EXPECT_FALSE(root.served_file(run / "missing.yaml").has_value());
+  EXPECT_EQ(root.contain(run / "episodes"), run / "episodes");
+  fs::create_symlink(directory_ / "secret.txt", run / "config.yaml");
+  fs::create_directory_symlink(directory_ / "root_sibling", run / "linked");
+  fs::create_symlink(run / "progress.csv", run / "inside.csv");
+  EXPECT_FALSE(root.served_file(run / "config.yaml").has_value());
+  EXPECT_FALSE(root.contain(run / "linked").has_value());
+  EXPECT_FALSE(root.contain(run / "linked" / "x.tep").has_value());
+  EXPECT_EQ(root.served_file(run / "inside.csv"), run / "progress.csv");
+  EXPECT_FALSE(root.contain(directory_ / "secret.txt").has_value());
+}
+
+TEST_F(ServedRootTest, NamesTooLongForTheFileSystemCannotExist) {
+  EXPECT_TRUE(ServedRoot::nameable("run/progress.csv"));
+  EXPECT_TRUE(ServedRoot::nameable(std::string(255, 'a') + "/b"));
+  EXPECT_FALSE(ServedRoot::nameable(std::string(256, 'a')));
+  EXPECT_FALSE(ServedRoot::nameable("run/" + std::string(8000, 'a')));
+  std::string deep;
+  for (int i = 0; i < 1000; ++i) deep += "abcd/";
+  EXPECT_FALSE(ServedRoot::nameable(deep));  // 5,000 characters: longer than any path
+}
+
 TEST_F(ServedRootTest, TheRootMustBeADirectory) {
   EXPECT_NE(
       testing::error_message([&] { ServedRoot(directory_ / "missing"); }).find("not a directory"),

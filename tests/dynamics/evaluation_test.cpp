@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_message.hpp"
 #include "synthetic_limb.hpp"
 #include "test_models.hpp"
 
@@ -77,6 +78,25 @@ TEST(Evaluation, OneStepErrorsAreTheRmseOfEachGroup) {
   const double count = 2.0 * static_cast<double>(ends.size());
   EXPECT_NEAR(report.rmse[0], std::sqrt(angle / count), 1e-5 * report.rmse[0]);
   EXPECT_NEAR(report.rmse[1], std::sqrt(velocity / count), 1e-5 * report.rmse[1]);
+}
+
+// A model whose predictions are not finite has no error to report: "RMSE nan" is refused.
+TEST(Evaluation, PredictionsThatAreNotFiniteAreAnErrorNotAnRmse) {
+  const SequenceData data = testing::SyntheticLimb{}.generate(40, 6);
+  Model model(small_description(Architecture::kLstm), 3);
+  {
+    torch::NoGradGuard no_grad;
+    model.network().parameters().front().view(-1)[0] = std::nanf("");
+  }
+  const WindowSet windows(data, model, 1.0);
+  EXPECT_NE(testing::error_message([&] {
+              one_step_errors(model, windows, Split::kTest, 3);
+            }).find("predictions of angle are not finite"),
+            std::string::npos);
+  EXPECT_NE(testing::error_message([&] {
+              rollout_errors(model, data, Split::kTest, 2.0, 1.0);
+            }).find("are not finite"),
+            std::string::npos);
 }
 
 TEST(Evaluation, RolloutsCutEachTestSegmentIntoPiecesOfTheHorizon) {

@@ -40,6 +40,32 @@ constexpr const char* kSmallLstm =
     "evaluation: {horizons_s: [2, 60]}\n"
     "seed: 4\n";
 
+// Rows out of order leave no run of rows a window fits in: the error says where time goes back
+// instead of "the data is shorter than one window".
+TEST_F(FitRun, RowsOutOfOrderAreNamedByLine) {
+  SequenceData data = testing::SyntheticLimb{}.generate(400, 9);
+  for (int64_t t = 0; t + 1 < data.rows(); t += 2) {  // every pair swapped
+    std::swap(data.time(t), data.time(t + 1));
+  }
+  const auto shuffled = directory_ / "shuffled.csv";
+  write_prepared_csv(data, shuffled);
+  const std::string message = error_message([&] {
+    run_fit(FitExperiment::from_config(Config::parse(
+                "data: {file: " + shuffled.string() + "}\n" + kSmallLstm, "fit.yaml")),
+            directory_ / "never", true);
+  });
+  EXPECT_NE(message.find(shuffled.string() + ": no training window fits: its longest run of "
+                                             "train rows"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("a window needs 11; time stands still or goes back"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("(first at " + shuffled.string() + ":4: rows out of order?)"),
+            std::string::npos)
+      << message;
+  EXPECT_FALSE(std::filesystem::exists(directory_ / "never"));
+}
+
 TEST_F(FitRun, WritesTheRunDirectory) {
   const auto run = directory_ / "run";
   const FitResult result = run_fit(FitExperiment::from_config(config(kSmallLstm)), run, true);

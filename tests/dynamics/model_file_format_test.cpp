@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -141,6 +142,49 @@ TEST(ModelFileFormat, APayloadThatDoesNotMatchTheTableIsRefused) {
               encode_model_file(short_values);
             }).find("parameter 'head.bias' of shape [4] has 3 values"),
             std::string::npos);
+}
+
+// A file someone crafted, its checksum made right: weights that are not numbers, or an output
+// bound that overflows float32, are refused at load instead of evaluating to "RMSE nan".
+TEST(ModelFileFormat, CraftedWeightsAndBoundsThatCannotBeComputedAreRefused) {
+  const std::string bytes = encode_model_file(lstm_contents());
+  const std::size_t payload = bytes.find('\n', bytes.find("payload_bytes ")) + 1;
+  std::string nan_weight = bytes.substr(0, bytes.rfind("crc32c "));
+  const float nan = std::nanf("");
+  nan_weight.replace(payload + 8, sizeof nan, reinterpret_cast<const char*>(&nan), sizeof nan);
+  nan_weight += "crc32c " + checksum_text(crc32c(nan_weight.data(), nan_weight.size())) + "\n";
+  EXPECT_NE(error_message([&] {
+              decode_model_file(nan_weight, "m.tdm");
+            }).find("m.tdm: parameter 'weights' holds a non-finite value (nan) at index 2"),
+            std::string::npos);
+  for (const std::string bound : {"1e300", "1e7", "2e6"}) {
+    const std::string message = error_message([&] {
+      decode_model_file(edited(bytes, "output_bound: 100", "output_bound: " + bound), "m.tdm");
+    });
+    EXPECT_NE(message.find("output_bound: must lie in (0, 1e6]"), std::string::npos)
+        << bound << ": " << message;
+  }
+}
+
+// Every single bit flipped anywhere in a model file: refused, never decoded.
+TEST(ModelFileFormat, EveryFlippedBitIsRefused) {
+  const std::string bytes = encode_model_file(lstm_contents());
+  int refused = 0;
+  for (std::size_t position = 0; position < bytes.size(); ++position) {
+    std::string flipped = bytes;
+    flipped[position] = static_cast<char>(flipped[position] ^ (1 << (position % 8)));
+    try {
+      decode_model_file(flipped, "m.tdm");
+      ADD_FAILURE() << "a flip at byte " << position << " was decoded";
+    } catch (const Error& e) {
+      ++refused;
+      EXPECT_EQ(std::string(e.what()).rfind("m.tdm", 0), 0u) << e.what();
+    }
+  }
+  EXPECT_EQ(refused, static_cast<int>(bytes.size()));
+  for (std::size_t size = 0; size < bytes.size(); size += 7) {
+    EXPECT_THROW(decode_model_file(bytes.substr(0, size), "m.tdm"), Error) << size;
+  }
 }
 
 TEST(ModelFileFormat, DamagedFramingIsNamed) {

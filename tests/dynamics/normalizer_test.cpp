@@ -40,6 +40,34 @@ TEST(Normalizer, MinMaxMapsTheTrainRangeOntoMinusOneOne) {
   EXPECT_EQ(none.scale, Eigen::Vector2d::Ones());
 }
 
+// Values whose mean or spread overflows are named by column, value and line, not left for the
+// model to refuse as "normalisation offsets must be finite".
+TEST(Normalizer, ValuesTooLargeToNormaliseAreNamedWithTheirLine) {
+  SequenceData data = three_rows();
+  data.source = "limb.csv";
+  data.lines = {10, 11, 13, 14};
+  const auto message = [&](Normalization kind) {
+    try {
+      Normalizer::fit(data, kind);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  data.states(1, 0) = 1e308;
+  data.states(2, 0) = 1e308;  // the sum overflows
+  EXPECT_EQ(message(Normalization::kStandard),
+            "limb.csv:11: column 'x': its values are too large to normalise (their mean or "
+            "spread overflows); the largest, 1e+308, is on this line");
+  data.states(1, 0) = 1.7e308;
+  data.states(2, 0) = -1.7e308;  // the sum is 1, the squares and the range overflow
+  EXPECT_EQ(message(Normalization::kMinMax),
+            "limb.csv:11: column 'x': its values are too large to normalise (their mean or "
+            "spread overflows); the largest, 1.7e+308, is on this line");
+  data.lines.clear();
+  EXPECT_EQ(message(Normalization::kStandard).rfind("limb.csv, row 1: column 'x'", 0), 0u);
+}
+
 TEST(Normalizer, ValidateRejectsWrongSizesAndNonPositiveScales) {
   Normalizer n = Normalizer::identity(3);
   EXPECT_NO_THROW(n.validate(3, "here"));

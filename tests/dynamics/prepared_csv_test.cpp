@@ -64,6 +64,37 @@ TEST_F(PreparedCsv, AWrittenFileChangedLaterIsRefused) {
             std::string::npos);
 }
 
+// Changed line ends get a message saying so, naming the file and line.
+TEST_F(PreparedCsv, ChangedLineEndsAreNamed) {
+  const SequenceData data = testing::SyntheticLimb{}.generate(20, 1);
+  const auto file = directory_ / "written.csv";
+  write_prepared_csv(data, file);
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string crlf, cr;
+  for (char c : text) {
+    crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    cr += c == '\n' ? '\r' : c;
+  }
+  std::ofstream(directory_ / "crlf.csv", std::ios::binary) << crlf;
+  std::ofstream(directory_ / "cr.csv", std::ios::binary) << cr;
+  EXPECT_NE(error_message([&] {
+              read_prepared_csv(directory_ / "crlf.csv");
+            }).find((directory_ / "crlf.csv").string() + ":1: its line ends were changed to CRLF"),
+            std::string::npos);
+  EXPECT_NE(
+      error_message([&] {
+        read_prepared_csv(directory_ / "cr.csv");
+      }).find((directory_ / "cr.csv").string() + ":1: its lines end in a carriage return alone"),
+      std::string::npos);
+  // Rows remember their lines (blank lines skipped) for later messages.
+  const auto spaced = write(
+      "spaced.csv", std::string(kHeader) + "0,1,2,3,4,5,6,train\n\n" + "0.1,1,2,3,4,5,6,test\n");
+  const SequenceData read = read_prepared_csv(spaced);
+  EXPECT_EQ(read.lines, (std::vector<int64_t>{2, 4}));
+  EXPECT_EQ(read.where(1), spaced.string() + ":4");
+}
+
 TEST_F(PreparedCsv, WriteThenReadIsExact) {
   const SequenceData data = testing::SyntheticLimb{}.generate(50, 3);
   const auto file = directory_ / "synthetic.csv";

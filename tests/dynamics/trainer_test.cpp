@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
+#include "support/learning_seed.hpp"
 #include "synthetic_limb.hpp"
 #include "test_models.hpp"
 
@@ -42,7 +45,8 @@ TEST(Trainer, OverfitsATinyDataSet) {
     ModelDescription d = small_description(kind, 5, 16, 1);
     d.architecture.output_bound = 20.0;
     d.normalizer = Normalizer::fit(data, Normalization::kStandard);
-    Model model(d, 1);
+    const uint64_t seed = testing::learning_seed(1);
+    Model model(d, seed);
     const WindowSet windows(data, model, 1.0);
     const auto& ends = windows.ends(Split::kTrain);
     ASSERT_EQ(ends.size(), 48u);
@@ -53,12 +57,16 @@ TEST(Trainer, OverfitsATinyDataSet) {
     options.final_learning_rate = 1e-3;
     options.validation_fraction = 0.0;
     const double before = mse(model, windows, ends);
-    const TrainingReport report = train_model(model, windows, options, 1, nullptr, true);
+    const TrainingReport report = train_model(model, windows, options, seed, nullptr, true);
     const double after = mse(model, windows, ends);
+    std::printf("%s: loss %.2e of the labels' power\n", architecture_name(kind).c_str(),
+                after / label_power(windows, ends));
     EXPECT_EQ(report.epochs_run, 400);
-    // Below 0.5 % of the loss of predicting zero (an RMSE under 7 % of the labels' RMS), from an
-    // initial loss above the labels' own power.
-    EXPECT_GT(before, label_power(windows, ends));
+    // Below 0.5 % of the loss of predicting zero (an RMSE under 7 % of the labels' RMS), a
+    // hundredth of the initial loss (about the labels' own power, measured 0.96–1.1 of it).
+    // Measured over seeds 1–4 and three OpenBLAS kernel paths: 1.8–2.7 × 10⁻³ of the labels'
+    // power (docs/testing.md).
+    EXPECT_LT(after, 1e-2 * before);
     EXPECT_LT(after, 5e-3 * label_power(windows, ends)) << "before " << before;
   }
 }

@@ -1,5 +1,5 @@
 // libFuzzer target: the CSV data sets a user's files hold — the SMA limb's recorded data set
-// and its prepared form (data/table with their schemas), the pneumatic arm's recording
+// and its prepared form (core/data_table with their schemas), the pneumatic arm's recording
 // (envs/pneumatic/pneumatic_dataset) — and the dashboard's reader of a run's progress.csv from
 // an offset. Bad input must raise tendril::Error.
 #include <cstddef>
@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   for (const uint64_t offset : {uint64_t{0}, uint64_t{size / 2}}) {
     try {
-      (void)tendril::dashboard::read_csv_slice(file, offset, 1000);
+      (void)tendril::dashboard::read_csv_slice(file, offset, {.max_bytes = 1000});
     } catch (const tendril::Error&) {
     }
   }

@@ -40,8 +40,10 @@ assert picture.shape == (48, 64, 3) and picture.std() > 0, picture.shape
 print(f"tendril {tendril.__version__} from {os.path.dirname(tendril.__file__)}: "
       f"{len(tendril.registry())} environments, observation {observation.shape}")
 PY
-tendril help | head -n 3
-tendril list-envs | grep -q "Elastica/Tracking3D-v0"
+tendril --help | head -n 3
+tendril list envs | grep -q "Elastica/Tracking3D-v0"
+tendril --version | grep -q "tendril $expected"
+tendril export --help | grep -q "C header"
 tendril plot --help | grep -q "curves"
 
 "$work/venv/bin/pip" wheel --quiet --no-build-isolation --no-deps -w "$work/wheels" "$source"

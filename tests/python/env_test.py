@@ -163,3 +163,70 @@ def test_the_package_works_without_gymnasium():
                           env={**os.environ, "PYTHONPATH": os.environ.get("PYTHONPATH", "")})
     assert done.returncode == 0, done.stderr
     assert done.stdout.split() == ["ok", "object"]
+
+
+def test_conversion_errors_say_what_is_wrong():
+    env = tendril.make("Pendulum-v1")
+    for seed in [-1, 2**64, 1.5, "7", True]:
+        with pytest.raises(tendril.Error, match=r"seed must be an integer in \[0, 2\*\*64 - 1\]"):
+            env.reset(seed=seed)
+    with pytest.raises(tendril.Error, match=r"seed must be an integer"):
+        env._native.reset(-1)  # the extension itself, below the Python checks
+    env.reset(seed=2**64 - 1)
+    env.reset(seed=np.uint64(2**64 - 1))
+    with pytest.raises(tendril.Error, match="an action must be numbers, got None"):
+        env.step(None)
+    with pytest.raises(tendril.Error, match="real numbers, got complex"):
+        env.step(np.array([1 + 2j]))
+    with pytest.raises(tendril.Error, match="must be numbers"):
+        env.step(np.array([object()]))
+    with pytest.raises(tendril.Error, match="must be numbers"):
+        env.step(["a"])
+    cartpole = tendril.make("CartPole-v1")
+    cartpole.reset(seed=0)
+    with pytest.raises(tendril.Error,
+                       match=r"Discrete\(2\) action 9223372036854775808 lies outside"):
+        cartpole.step(np.uint64(2**63))
+    with pytest.raises(tendril.Error, match="outside"):
+        cartpole.step(np.uint64(7))
+    assert cartpole.step(np.uint64(1))[0].shape == (4,)
+
+
+def test_saved_states_carry_a_checksum():
+    env = tendril.make("Elastica/Tracking3D-v0")
+    env.reset(seed=0)
+    state = env.save_state()
+    env.load_state(state)
+    rng = np.random.default_rng(2)
+    for position in rng.choice(len(state), size=40, replace=False):
+        damaged = bytearray(state)
+        damaged[position] ^= 1 << int(rng.integers(8))
+        with pytest.raises(tendril.Error, match="checksum|not a state"):
+            env.load_state(bytes(damaged))
+    with pytest.raises(tendril.Error, match="not a state"):
+        env.load_state(b"")
+
+
+def test_an_error_quoting_bytes_that_are_not_utf8_keeps_its_message():
+    # A snapshot whose first section name is invalid UTF-8, with a valid checksum: the message
+    # names the section with the bytes escaped instead of arriving empty.
+    import struct
+
+    def crc32c(data):
+        crc = 0xFFFFFFFF
+        for byte in data:
+            crc ^= byte
+            for _ in range(8):
+                crc = (crc >> 1) ^ (0x82F63B78 if crc & 1 else 0)
+        return crc ^ 0xFFFFFFFF
+
+    env = tendril.make("Pendulum-v1")
+    env.reset(seed=0)
+    state = env.save_state()
+    payload = bytearray(state[12:])
+    length = struct.unpack("<Q", payload[:8])[0]
+    payload[8:8 + length] = b"\xff\xfe" + bytes(payload[10:8 + length])
+    forged = state[:8] + struct.pack("<I", crc32c(bytes(payload))) + bytes(payload)
+    with pytest.raises(tendril.Error) as raised:
+        env.load_state(forged)
+    assert "\\xff\\xfe" in str(raised.value), str(raised.value)

@@ -112,3 +112,68 @@ def test_policy_errors_name_the_file(pendulum_run, tmp_path):
     with pytest.raises(tendril.Error, match="algo.no_such_key"):
         tendril.train(PENDULUM, out=tmp_path / "never", overrides={"algo.no_such_key": 1})
     assert not (tmp_path / "never").exists()
+
+
+def test_every_damaged_copy_of_a_policy_file_is_refused(pendulum_run, tmp_path):
+    # A bit flipped in each of 200 places spread over the file (header, weights, statistics,
+    # checksum line): never loaded as a policy.
+    data = (pendulum_run / "model.policy").read_bytes()
+    damaged = tmp_path / "flipped.policy"
+    rng = np.random.default_rng(4)
+    for position in sorted(rng.choice(len(data), size=200, replace=False)):
+        flipped = bytearray(data)
+        flipped[position] ^= 1 << int(rng.integers(8))
+        damaged.write_bytes(bytes(flipped))
+        with pytest.raises(tendril.Error, match="flipped.policy"):
+            tendril.load(damaged)
+    for size in [0, 7, len(data) // 3, len(data) - 1]:
+        damaged.write_bytes(data[:size])
+        with pytest.raises(tendril.Error, match="flipped.policy"):
+            tendril.load(damaged)
+
+
+# Ctrl-C during tendril.train: the training ends its iteration, writes a checkpoint and the call
+# raises KeyboardInterrupt saying how to continue; tendril.resume continues it.
+INTERRUPTED = """
+import signal, sys, tendril
+signal.signal(signal.SIGINT, signal.default_int_handler)
+try:
+    tendril.train(sys.argv[1], out=sys.argv[2], quiet=True, n_timesteps=3000000,
+                  checkpoint_freq=2048, eval__freq=0)
+except KeyboardInterrupt as stop:
+    print("KeyboardInterrupt:", stop)
+    sys.exit(3)
+print("finished without an interrupt")
+"""
+
+
+def test_ctrl_c_stops_training_at_a_checkpoint(tmp_path):
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    run = tmp_path / "interrupted"
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    child = subprocess.Popen([sys.executable, "-c", INTERRUPTED, PENDULUM, str(run)], env=env,
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 60
+    while not (run / "progress.csv").exists() and time.time() < deadline:
+        time.sleep(0.1)
+    time.sleep(1.0)  # into training
+    sent = time.time()
+    child.send_signal(signal.SIGINT)
+    try:
+        out, err = child.communicate(timeout=20)
+    except subprocess.TimeoutExpired:
+        child.kill()
+        child.communicate()
+        pytest.fail("tendril.train went on for 20 s after Ctrl-C")
+    assert child.returncode == 3, out + err
+    assert time.time() - sent < 20
+    assert "tendril.resume(" in out and str(run) in out, out
+    assert list((run / "checkpoints").glob("*.ckpt")), "no checkpoint written"
+    # The run continues from there.
+    steps = int(out.split("training stopped at ")[1].split()[0])
+    resumed = tendril.resume(run, stop_at=steps + 2048, quiet=True)
+    assert os.path.samefile(resumed, run)

@@ -105,3 +105,21 @@ def test_vector_env_errors():
         venv.step(np.zeros((2, 1), dtype=np.float32))
     venv.reset(seed=0)
     venv.step(np.zeros((2, 1), dtype=np.float32))
+
+
+def test_vector_env_seeds_and_counts_are_checked():
+    venv = tendril.make_vec("Pendulum-v1", 2)
+    for seed in [-1, 2**64, 2**64 - 1, 1.5]:  # 2**64 - 1 would give env 1 the seed 0
+        with pytest.raises(tendril.Error, match=r"seed must be an integer in \[0, 2\*\*64 - 2\]"):
+            venv.reset(seed=seed)
+    venv.reset(seed=2**64 - 2)
+    for count in [2**31, 0, -3, 2.5, "2"]:
+        with pytest.raises(tendril.Error,
+                           match=r"num_envs must be an integer in \[1, 2147483647\]"):
+            tendril.make_vec("Pendulum-v1", count)
+    with pytest.raises(tendril.Error, match="num_threads must be an integer"):
+        tendril.make_vec("Pendulum-v1", 2, num_threads=0)
+    with pytest.raises(tendril.Error, match="actions must be numbers, got None"):
+        venv.step(None)
+    with pytest.raises(tendril.Error, match="complex"):
+        venv.step(np.zeros((2, 1), dtype=np.complex64))

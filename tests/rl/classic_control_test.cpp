@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "support/evaluation.hpp"
 #include "tendril/envs/registry.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/experiment.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
@@ -57,8 +57,8 @@ Outcome train_from_config(const std::string& name, int seed_offset) {
       static_cast<double>(algorithm->num_timesteps()) / seconds, env_seconds, inference_seconds,
       update_seconds);
   const auto evaluation_env = make_evaluation_env(experiment.env, *env);
-  const EvaluationResult result =
-      evaluate_policy(algorithm->policy(), *evaluation_env, 20, true, experiment.seed + 1000);
+  const envs::RunResult result =
+      testing::evaluate(algorithm->policy(), *evaluation_env, 20, experiment.seed + 1000);
   std::printf("%s seed %llu: evaluation return %.1f ± %.1f\n", name.c_str(),
               static_cast<unsigned long long>(experiment.seed), result.mean_return(),
               result.std_return());
@@ -125,8 +125,8 @@ TEST_P(DqnClassicControl, CartPoleReaches475Within100kSteps) {
 
   const std::unique_ptr<Policy> policy = load_policy(run / "best_model.policy");
   const auto evaluation_env = envs::make(experiment.env.id, experiment.env.params);
-  const EvaluationResult best =
-      evaluate_policy(*policy, *evaluation_env, 20, true, experiment.seed + 1000);
+  const envs::RunResult best =
+      testing::evaluate(*policy, *evaluation_env, 20, experiment.seed + 1000);
   std::printf(
       "dqn/cartpole.yaml seed %llu: %.1f s; final model %.1f ± %.1f (10 episodes); best model "
       "(%lld steps) "

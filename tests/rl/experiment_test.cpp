@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "support/error_message.hpp"
+#include "support/evaluation.hpp"
 #include "tendril/envs/wrappers/history_stack.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -120,9 +120,8 @@ TEST(ExperimentWrappers, ATrainedRunEvaluatesWithItsWrappers) {
   const std::unique_ptr<Policy> policy = load_policy(run / "best_model.policy");
   const std::unique_ptr<Env> env = make_env(reloaded.env);
   EXPECT_EQ(env->observation_space().size(), 9);
-  const EvaluationResult again =
-      evaluate_policy(*policy, *env, reloaded.eval_episodes, true,
-                      reloaded.seed + 1000003 + result.best_eval_timesteps);
+  const envs::RunResult again = testing::evaluate(
+      *policy, *env, reloaded.eval_episodes, reloaded.seed + 1000003 + result.best_eval_timesteps);
   EXPECT_EQ(again.mean_return(), *result.best_eval_mean);
   const auto rows = evaluations(run);
   EXPECT_TRUE(std::any_of(rows.begin(), rows.end(),

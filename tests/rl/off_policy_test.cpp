@@ -4,16 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 
 #include "support/error_message.hpp"
+#include "support/evaluation.hpp"
+#include "support/learning_seed.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/vector/threaded_vec_env.hpp"
 #include "tendril/envs/vector/vec_env.hpp"
 #include "tendril/rl/dqn/dqn.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/sac/sac.hpp"
 #include "tendril/rl/td3/td3.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -60,10 +62,14 @@ double identity_score(const std::string& algorithm, const std::string& id, const
                       int64_t budget) {
   const std::string params = id == "Identity-v0" ? "n: 10" : "eps: 0.5";
   auto env = vec_env(id, params);
-  auto agent = make(algorithm, *env, algo, 0);
+  const uint64_t seed = testing::learning_seed(0);
+  auto agent = make(algorithm, *env, algo, seed);
   agent->learn(budget);
   auto evaluation_env = envs::make(id, Config::parse(params));
-  return evaluate_policy(agent->policy(), *evaluation_env, 20, true, 1000).mean_return();
+  const double score =
+      testing::evaluate(agent->policy(), *evaluation_env, 20, seed + 1000).mean_return();
+  std::printf("%s on %s: return %.1f\n", algorithm.c_str(), id.c_str(), score);
+  return score;
 }
 
 constexpr const char* kSmallBox = "gamma: 0.5\nlearning_starts: 100\nnet_arch: [64, 64]\n";

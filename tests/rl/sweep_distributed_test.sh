@@ -39,10 +39,10 @@ YAML
 done
 runs="n_steps_64-seed_0 n_steps_64-seed_1 n_steps_64-seed_2 n_steps_128-seed_0 n_steps_128-seed_1 n_steps_128-seed_2"
 
-"$T" sweep one.yaml --quiet --no-figures >one.log 2>&1 || fail "one process: rc=$?: $(tail -3 one.log)"
+"$T" sweep run one.yaml --quiet --no-figures >one.log 2>&1 || fail "one process: rc=$?: $(tail -3 one.log)"
 
 # --- MPI: two ranks, runs 0, 2, 4 on rank 0 and 1, 3, 5 on rank 1
-"$MPIRUN" -n 2 --oversubscribe --bind-to none "$T" sweep mpi.yaml --quiet >mpi.log 2>&1 ||
+"$MPIRUN" -n 2 --oversubscribe --bind-to none "$T" sweep run mpi.yaml --quiet >mpi.log 2>&1 ||
   fail "mpirun -n 2: rc=$?: $(tail -5 mpi.log)"
 [ "$(grep -c '^start,.*,[01],2$' mpi/sweep_log.csv)" -eq 2 ] || fail "sweep_log.csv: $(cat mpi/sweep_log.csv)"
 for i in 0 1 2 3 4 5; do
@@ -57,20 +57,20 @@ done
   [ -f mpi/summary/final.png ] ||
   fail "no summary with figures: $(ls mpi/summary 2>&1)"
 [ "$(grep -c '^summary: ' mpi.log)" -eq 1 ] || fail "the summary was not written exactly once"
-"$T" sweep one.yaml --aggregate-only --no-figures >/dev/null || fail "aggregate-only failed"
+"$T" sweep summarize one.yaml --no-figures >/dev/null || fail "aggregate-only failed"
 # The same runs, the same final evaluations (columns 1-8; steps/s differ).
 diff <(cut -d, -f1-8 one/summary/configurations.csv) <(cut -d, -f1-8 mpi/summary/configurations.csv) ||
   fail "configurations.csv differs between one process and two ranks"
 # A second launch with another rank count keeps every run.
-"$MPIRUN" -n 3 --oversubscribe --bind-to none "$T" sweep mpi.yaml --quiet --no-figures >again.log 2>&1 ||
+"$MPIRUN" -n 3 --oversubscribe --bind-to none "$T" sweep run mpi.yaml --quiet --no-figures >again.log 2>&1 ||
   fail "second mpirun: rc=$?"
 [ "$(grep -c 'finished earlier, kept' again.log)" -eq 6 ] || fail "second launch: $(cat again.log)"
 
 # --- Slurm: three array tasks, each taking two runs
-"$T" sweep slurm.yaml --slurm --tasks 3 --time 00:10:00 >slurm.log 2>&1 || fail "--slurm: rc=$?"
+"$T" sweep slurm slurm.yaml --tasks 3 --time 00:10:00 >slurm.log 2>&1 || fail "--slurm: rc=$?"
 script=slurm/slurm/sweep.sbatch
 grep -qx '#SBATCH --array=0-2' "$script" || fail "array range: $(grep array "$script")"
-grep -qx "exec '$T' sweep '$WORK/slurm.yaml' --rank \"\$SLURM_ARRAY_TASK_ID\" --ranks 3 --quiet" "$script" ||
+grep -qx "exec '$T' sweep run '$WORK/slurm.yaml' --rank \"\$SLURM_ARRAY_TASK_ID\" --ranks 3 --quiet" "$script" ||
   fail "task command: $(grep exec "$script")"
 for task in 2 0 1; do
   (cd / && SLURM_ARRAY_TASK_ID=$task bash "$WORK/$script") >"task$task.log" 2>&1 ||

@@ -67,7 +67,7 @@ TEST_F(SlurmScripts, OneArrayTaskPerRunByDefault) {
   EXPECT_EQ(lines_starting(script, "cd "), std::vector<std::string>{"cd '/scratch/me'"});
   // The sweep file's apostrophe survives bash's quoting.
   EXPECT_EQ(lines_starting(script, "exec "),
-            std::vector<std::string>{"exec '/opt/tendril/bin/tendril' sweep "
+            std::vector<std::string>{"exec '/opt/tendril/bin/tendril' sweep run "
                                      "'/home/me/configs/it'\\''s/grid.yaml' --rank "
                                      "\"$SLURM_ARRAY_TASK_ID\" --ranks 6 --quiet"});
   // Every #SBATCH line comes before the first command (sbatch stops reading them there).

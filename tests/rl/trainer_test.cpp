@@ -12,11 +12,11 @@
 #include <vector>
 
 #include "support/error_message.hpp"
+#include "support/evaluation.hpp"
 #include "tendril/core/episode_reader.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/envs/registry.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/training_observers.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -141,11 +141,16 @@ TEST(Trainer, EvaluationEventsCarryTheSuccessRate) {
   fs::create_directories(run);
   {
     ScalarLogObserver log(run, false, 0);
-    EvaluationResult evaluation;
-    evaluation.returns = {1.0, 2.0, 6.0, 3.0};
-    evaluation.lengths = {10, 20, 30, 40};
-    evaluation.final_infos.resize(4);
-    for (int i = 0; i < 4; ++i) evaluation.final_infos[i].set("is_success", i == 2 ? 0.0 : 1.0);
+    envs::RunResult evaluation;
+    const double returns[] = {1.0, 2.0, 6.0, 3.0};
+    for (int i = 0; i < 4; ++i) {
+      envs::EpisodeOutcome episode;
+      episode.index = i;
+      episode.episode_return = returns[i];
+      episode.length = 10 * (i + 1);
+      episode.final_info.set("is_success", i == 2 ? 0.0 : 1.0);
+      evaluation.episodes.push_back(episode);
+    }
     log.log_evaluation(5000, evaluation);
   }
   std::map<std::string, float> at_5000;
@@ -220,8 +225,8 @@ TEST(Trainer, SaveBestKeepsTheModelOfTheBestEvaluation) {
   const std::unique_ptr<Policy> policy = load_policy(run / "best_model.policy");
   ASSERT_TRUE(policy->observation_normalization().has_value());
   const auto evaluation_env = envs::make(e.env.id, e.env.params);
-  const EvaluationResult again = evaluate_policy(*policy, *evaluation_env, e.eval_episodes, true,
-                                                 e.seed + 1000003 + best.first);
+  const envs::RunResult again =
+      testing::evaluate(*policy, *evaluation_env, e.eval_episodes, e.seed + 1000003 + best.first);
   EXPECT_EQ(again.mean_return(), best.second);
 }
 

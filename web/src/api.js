@@ -77,6 +77,8 @@ export class LiveCsv {
     this.partial = slice.partial_line;
     const changed = slice.rows.length > 0 || slice.restarted || !sameColumns;
     this.offset = slice.next_offset;
+    // A long file comes in pages (a bounded number of lines per answer).
+    if (slice.more) return (await this.poll()) || changed;
     return changed;
   }
 

@@ -209,6 +209,11 @@ void Cursor::raw(void* data, std::size_t size) {
   position_ += size;
 }
 
+void Cursor::skip(std::size_t size) {
+  expect(size);
+  position_ += size;
+}
+
 uint8_t Cursor::u8() {
   uint8_t value;
   raw(&value, sizeof value);

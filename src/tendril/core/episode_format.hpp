@@ -90,6 +90,8 @@ class Cursor {
   bool done() const { return position_ == bytes_.size(); }
   // Raises Error unless `size` more bytes are left: a check before allocating room for them.
   void expect(std::size_t size) const;
+  // Passes over `size` bytes (Error when fewer are left).
+  void skip(std::size_t size);
 
  private:
   void raw(void* data, std::size_t size);

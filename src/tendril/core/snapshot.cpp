@@ -1,10 +1,33 @@
 #include "tendril/core/snapshot.hpp"
 
+#include <cstdio>
 #include <cstring>
 
 #include "tendril/core/error.hpp"
 
 namespace tendril {
+
+namespace {
+
+// A section name read from damaged bytes, fit for a message: printable ASCII as it is, other
+// bytes as \xNN, at most 64 of them.
+std::string printable(const std::string& name) {
+  std::string out;
+  for (std::size_t i = 0; i < name.size() && i < 64; ++i) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      char escaped[5];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+      out += escaped;
+    }
+  }
+  if (name.size() > 64) out += "... (" + std::to_string(name.size()) + " bytes)";
+  return out;
+}
+
+}  // namespace
 
 void SnapshotWriter::raw(const void* data, std::size_t size) {
   const auto* begin = static_cast<const std::byte*>(data);
@@ -49,7 +72,7 @@ void SnapshotReader::section(std::string_view name) {
   std::string found(length, '\0');
   raw(found.data(), length);
   if (found != name) {
-    fail("expected section '" + std::string(name) + "', found '" + found + "'");
+    fail("expected section '" + std::string(name) + "', found '" + printable(found) + "'");
   }
   section_ = found;
 }

@@ -14,6 +14,8 @@ namespace tendril::dashboard {
 
 namespace {
 
+constexpr std::size_t kMaxColumns = 10000;
+
 std::vector<std::string_view> split_cells(std::string_view line) {
   std::vector<std::string_view> cells;
   std::size_t start = 0;
@@ -49,11 +51,12 @@ bool parse_cell(std::string_view cell, double& value) {
 
 }  // namespace
 
-CsvSlice read_csv_slice(const std::filesystem::path& file, uint64_t offset, uint64_t max_bytes) {
+CsvSlice read_csv_slice(const std::filesystem::path& file, uint64_t offset,
+                        const CsvSliceLimits& limits) {
   std::error_code error;
   const uint64_t size = std::filesystem::file_size(file, error);
   require(!error, "cannot read the file", file.string());
-  require(size <= max_bytes, "too large to serve (" + std::to_string(size) + " bytes)",
+  require(size <= limits.max_bytes, "too large to serve (" + std::to_string(size) + " bytes)",
           file.string());
   std::ifstream in(file, std::ios::binary);
   require(in.good(), "cannot open the file", file.string());
@@ -66,9 +69,13 @@ CsvSlice read_csv_slice(const std::filesystem::path& file, uint64_t offset, uint
     slice.partial_line = !text.empty();
     return slice;
   }
-  for (std::string_view column : split_cells(std::string_view(text).substr(0, header_end))) {
-    slice.columns.emplace_back(trim(column));
-  }
+  const std::vector<std::string_view> header =
+      split_cells(std::string_view(text).substr(0, header_end));
+  require(header.size() <= kMaxColumns,
+          "a header of " + std::to_string(header.size()) + " columns (at most " +
+              std::to_string(kMaxColumns) + " are read)",
+          file.string());
+  for (std::string_view column : header) slice.columns.emplace_back(trim(column));
   std::size_t position = header_end + 1;
   if (offset > text.size()) slice.restarted = true;
   if (offset > position && offset <= text.size()) position = static_cast<std::size_t>(offset);
@@ -81,8 +88,17 @@ CsvSlice read_csv_slice(const std::filesystem::path& file, uint64_t offset, uint
       1 + static_cast<int64_t>(std::count(text.begin(), text.begin() + position, '\n'));
   slice.first_line = line_number;
   bool first_row = true;
+  auto problem = [&](std::string what) {
+    if (slice.problems.size() < limits.max_problems) slice.problems.push_back(std::move(what));
+    ++slice.problem_count;
+  };
+  std::size_t lines = 0;
   while (position < text.size()) {
     const std::size_t end = text.find('\n', position);
+    if (end != std::string::npos && lines++ == limits.max_lines) {
+      slice.more = true;
+      break;
+    }
     if (end == std::string::npos) {
       slice.partial_line = true;
       break;
@@ -96,15 +112,15 @@ CsvSlice read_csv_slice(const std::filesystem::path& file, uint64_t offset, uint
     const std::vector<std::string_view> cells = split_cells(line);
     const std::string where = "line " + std::to_string(line_number) + ": ";
     if (cells.size() != slice.columns.size()) {
-      slice.problems.push_back(where + std::to_string(cells.size()) + " cells, the header has " +
-                               std::to_string(slice.columns.size()));
+      problem(where + std::to_string(cells.size()) + " cells, the header has " +
+              std::to_string(slice.columns.size()));
     } else {
       std::vector<double> row(cells.size());
       for (std::size_t c = 0; c < cells.size(); ++c) {
         if (!parse_cell(cells[c], row[c])) {
           row[c] = std::numeric_limits<double>::quiet_NaN();
-          slice.problems.push_back(where + "'" + std::string(trim(cells[c])) + "' in column " +
-                                   slice.columns[c] + " is not a number");
+          problem(where + "'" + std::string(trim(cells[c]).substr(0, 40)) + "' in column " +
+                  slice.columns[c] + " is not a number");
         }
       }
       if (first_row) slice.first_line = line_number;

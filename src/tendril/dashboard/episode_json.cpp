@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "tendril/core/episode_reader.hpp"
 #include "tendril/dashboard/json_writer.hpp"
 
 namespace tendril::dashboard {
@@ -118,53 +119,62 @@ class SceneJson {
 
 }  // namespace
 
-std::string episode_json(const PartialEpisode& partial, int max_frames) {
-  const Episode& episode = partial.episode;
+std::string episode_json(const std::filesystem::path& file, int max_frames, std::size_t max_bytes) {
+  // Two passes over the file: which frames there are, then only the chosen ones built.
+  const EpisodeOutline outline = outline_episode(file);
+  const auto count = static_cast<std::size_t>(outline.frames());
+  const std::size_t affordable = max_bytes / std::max<std::size_t>(outline.frame_bytes, 1);
+  const std::size_t limit =
+      std::max<std::size_t>({std::min(static_cast<std::size_t>(max_frames), affordable), 2});
+  const std::size_t stride = count <= limit ? 1 : (count + limit - 2) / (limit - 1);
+  std::vector<int64_t> picked;
+  for (std::size_t i = 0; i < count; i += stride) picked.push_back(static_cast<int64_t>(i));
+  if (count > 0 && picked.back() != static_cast<int64_t>(count - 1)) {
+    picked.push_back(static_cast<int64_t>(count - 1));
+  }
+  // A file being written may have grown since: its first frames are the ones counted.
+  const PartialEpisode chosen = read_partial_episode(file, picked);
+
   JsonWriter json;
   json.begin_object();
   json.key("metadata").begin_object();
-  for (const auto& [key, value] : episode.metadata) json.key(key).value(value);
+  for (const auto& [key, value] : outline.metadata) json.key(key).value(value);
   json.end_object();
-  json.key("complete").value(partial.problem.empty());
-  json.key("truncated").value(partial.truncated);
-  json.key("problem").value(partial.problem);
-  json.key("action_size").value(episode.action_size);
+  json.key("complete").value(outline.problem.empty());
+  json.key("truncated").value(outline.truncated);
+  json.key("problem").value(outline.problem);
+  json.key("action_size").value(outline.action_size);
   json.key("summary");
-  if (episode.summary) {
+  if (outline.summary) {
     json.begin_object()
         .key("steps")
-        .value(episode.summary->steps)
+        .value(outline.summary->steps)
         .key("return")
-        .value(episode.summary->episode_return)
+        .value(outline.summary->episode_return)
         .key("terminated")
-        .value(episode.summary->terminated)
+        .value(outline.summary->terminated)
         .key("truncated")
-        .value(episode.summary->truncated)
+        .value(outline.summary->truncated)
         .end_object();
   } else {
     json.null();
   }
-  const std::size_t count = episode.frames.size();
-  const std::size_t limit = static_cast<std::size_t>(std::max(max_frames, 2));
-  const std::size_t stride = count <= limit ? 1 : (count + limit - 2) / (limit - 1);
-  std::vector<std::size_t> picked;
-  for (std::size_t i = 0; i < count; i += stride) picked.push_back(i);
-  if (count > 0 && picked.back() != count - 1) picked.push_back(count - 1);
   std::vector<double> returns(count);  // the return up to each frame, over every frame
   for (std::size_t i = 0; i < count; ++i) {
-    returns[i] = (i > 0 ? returns[i - 1] : 0.0) + episode.frames[i].reward;
+    returns[i] = (i > 0 ? returns[i - 1] : 0.0) + outline.rewards[i];
   }
   json.key("frame_count").value(static_cast<int64_t>(count));
   json.key("stride").value(static_cast<int64_t>(stride));
   SceneJson scenes(json);
   json.key("frames").begin_array();
-  for (const std::size_t i : picked) {
-    const EpisodeFrame& frame = episode.frames[i];
+  const std::size_t built = std::min(picked.size(), chosen.episode.frames.size());
+  for (std::size_t p = 0; p < built; ++p) {
+    const EpisodeFrame& frame = chosen.episode.frames[p];
     json.begin_object();
     json.key("step").value(frame.step);
     json.key("time").value(frame.scene.time, 10);
     json.key("reward").value(frame.reward, 10);
-    json.key("return").value(returns[i], 10);
+    json.key("return").value(returns[static_cast<std::size_t>(picked[p])], 10);
     json.key("terminated").value(frame.terminated);
     json.key("truncated").value(frame.truncated);
     json.key("action").numbers(frame.action.data(), static_cast<std::size_t>(frame.action.size()));

@@ -39,8 +39,9 @@ struct RunIndex {
   std::vector<SweepEntry> sweeps;
 };
 
-// Whether `directory` is a run: it holds config.yaml, progress.csv or eval.csv.
-bool is_run_directory(const std::filesystem::path& directory);
+// Whether `directory` (inside the root) is a run: it holds config.yaml, progress.csv or eval.csv
+// inside the root (a symbolic link leading out of it does not count).
+bool is_run_directory(const ServedRoot& root, const std::filesystem::path& directory);
 
 // The runs at most `max_depth` directories below the root (not looking inside runs or hidden
 // directories), sorted by path; a directory below the root with at least two runs directly
@@ -48,7 +49,10 @@ bool is_run_directory(const std::filesystem::path& directory);
 // never listed as a sweep: its runs are the list.
 RunIndex index_runs(const ServedRoot& root, int max_depth = 6);
 
-// The episode files (*.tep) of a run directory's episodes/, sorted by name.
-std::vector<std::filesystem::path> episode_files(const std::filesystem::path& run_directory);
+// The episode files (*.tep) of a run directory's episodes/, sorted by name: only those that are
+// regular files inside the root, in an episodes/ inside the root (links are followed only as far
+// as the root reaches).
+std::vector<std::filesystem::path> episode_files(const ServedRoot& root,
+                                                 const std::filesystem::path& run_directory);
 
 }  // namespace tendril::dashboard

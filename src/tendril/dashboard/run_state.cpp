@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace tendril::dashboard {
@@ -38,11 +39,12 @@ double number(const std::string& cell) {
 }
 
 // The newest checkpoint's steps (checkpoints/step_<N>.ckpt), or −1.
-int64_t newest_checkpoint(const fs::path& directory) {
+int64_t newest_checkpoint(const ServedRoot& root, const fs::path& directory) {
   int64_t newest = -1;
+  const std::optional<fs::path> folder = root.contain(directory / "checkpoints");
+  if (!folder) return newest;
   std::error_code error;
-  for (fs::directory_iterator it(directory / "checkpoints", error), end; !error && it != end;
-       it.increment(error)) {
+  for (fs::directory_iterator it(*folder, error), end; !error && it != end; it.increment(error)) {
     const std::string name = it->path().filename().string();
     if (name.rfind("step_", 0) != 0 || it->path().extension() != ".ckpt") continue;
     int64_t steps = 0;
@@ -55,9 +57,10 @@ int64_t newest_checkpoint(const fs::path& directory) {
 }
 
 // The process holding the flock on `directory`/run.lock, or 0.
-int64_t lock_holder(const fs::path& directory, const HeldLocks& locks) {
+int64_t lock_holder(const ServedRoot& root, const fs::path& directory, const HeldLocks& locks) {
+  const std::optional<fs::path> file = root.served_file(directory / "run.lock");
   struct stat status {};
-  if (::stat((directory / "run.lock").c_str(), &status) != 0) return 0;
+  if (!file || ::stat(file->c_str(), &status) != 0) return 0;
   const auto found =
       locks.find({(static_cast<uint64_t>(major(status.st_dev)) << 32) | minor(status.st_dev),
                   static_cast<uint64_t>(status.st_ino)});
@@ -127,9 +130,15 @@ HeldLocks held_locks() {
   return locks;
 }
 
-RunState read_run_state(const fs::path& directory, const Config* config, const HeldLocks& locks) {
+RunState read_run_state(const ServedRoot& root, const fs::path& directory, const Config* config,
+                        const HeldLocks& locks) {
   RunState state;
-  const LastRow progress = last_csv_row(directory / "progress.csv");
+  const auto has = [&](const char* name) { return root.served_file(directory / name).has_value(); };
+  const auto last_row = [&](const char* name) {
+    const std::optional<fs::path> file = root.served_file(directory / name);
+    return file ? last_csv_row(*file) : LastRow{};
+  };
+  const LastRow progress = last_row("progress.csv");
   const bool counts_epochs = std::find(progress.columns.begin(), progress.columns.end(),
                                        "time/epochs") != progress.columns.end();
   bool has_algorithm = false;
@@ -138,7 +147,7 @@ RunState read_run_state(const fs::path& directory, const Config* config, const H
   } catch (const std::exception&) {  // an algorithm that is not a string: still a training run
     has_algorithm = true;
   }
-  if (counts_epochs || fs::exists(directory / "model.tdm")) {
+  if (counts_epochs || has("model.tdm")) {
     state.kind = "fit";
   } else if (has_algorithm) {
     state.kind = "training";
@@ -162,20 +171,18 @@ RunState read_run_state(const fs::path& directory, const Config* config, const H
     state.steps = progress.value("time/total_timesteps");
     if (config != nullptr) state.total = budget(*config, "n_timesteps");
   }
-  state.last_eval = last_csv_row(directory / "eval.csv").value("mean_return");
-  state.checkpoint = newest_checkpoint(directory);
+  state.last_eval = last_row("eval.csv").value("mean_return");
+  state.checkpoint = newest_checkpoint(root, directory);
 
-  state.pid = lock_holder(directory, locks);
+  state.pid = lock_holder(root, directory, locks);
   if (state.pid != 0) {
     state.status = "running";
   } else if (state.kind == "training") {
-    state.status = fs::exists(directory / "model.policy") ? "finished"
-                   : state.checkpoint >= 0                ? "paused"
-                                                          : "stopped";
+    state.status = has("model.policy") ? "finished" : state.checkpoint >= 0 ? "paused" : "stopped";
   } else if (state.kind == "fit") {
     // A fit ends with its test rollouts (evaluation.csv) or, without a test split, at its last
     // epoch; one stopped early by its patience shows as stopped.
-    const bool done = fs::exists(directory / "evaluation.csv") || state.steps >= state.total;
+    const bool done = has("evaluation.csv") || state.steps >= state.total;
     state.status = done ? "finished" : "stopped";
   }
   return state;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tendril/core/config.hpp"
+#include "tendril/dashboard/served_root.hpp"
 
 namespace tendril::dashboard {
 
@@ -16,7 +17,7 @@ namespace tendril::dashboard {
 struct RunState {
   static constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 
-  // "training" (tendril train: config.yaml with an algorithm), "fit" (tendril dynamics fit:
+  // "training" (tendril train: config.yaml with an algorithm), "fit" (tendril model fit:
   // progress.csv counts time/epochs), "" (logs from elsewhere, e.g. Stable-Baselines3's own).
   std::string kind;
   // "running"  — a live process holds the run's lock (run.lock);
@@ -39,12 +40,14 @@ struct RunState {
 using HeldLocks = std::map<std::pair<uint64_t, uint64_t>, int64_t>;
 HeldLocks held_locks();
 
-// The state of the run in `directory`; `config` is its config.yaml when readable (else null).
-RunState read_run_state(const std::filesystem::path& directory, const Config* config,
-                        const HeldLocks& locks);
+// The state of the run in `directory` (inside `root`); `config` is its config.yaml when
+// readable (else null). Only files that pass the root's check are read or counted.
+RunState read_run_state(const ServedRoot& root, const std::filesystem::path& directory,
+                        const Config* config, const HeldLocks& locks);
 
 // The header and the last complete row of a CSV file, reading only the file's start and its
-// last 64 KiB; empty when there is no complete row. Cells that are empty or not numbers are NaN.
+// last 64 KiB; empty when there is no complete row (or no such file). Cells that are empty or
+// not numbers are NaN.
 struct LastRow {
   std::vector<std::string> columns;
   std::vector<double> values;

@@ -1,10 +1,18 @@
 #include "tendril/dashboard/server.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "tendril/core/config.hpp"
 #include "tendril/core/episode_reader.hpp"
@@ -30,6 +38,12 @@ namespace {
 
 constexpr const char* kJson = "application/json";
 constexpr uint64_t kMaxFileBytes = 256ull << 20;
+// Worker threads and how long each waits for a silent client: idle connections (a browser's
+// kept-alive ones, or someone's held open on purpose) each hold a worker until then, so a few
+// dozen of them must not delay everyone else by more than a moment.
+constexpr std::size_t kWorkerThreads = 32;
+constexpr time_t kReadTimeoutSeconds = 2;
+constexpr time_t kKeepAliveSeconds = 2;
 
 // A request that cannot be answered: its status and why.
 struct Refusal {
@@ -95,6 +109,43 @@ void write_run(JsonWriter& json, const RunEntry& run) {
   json.end_object();
 }
 
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// The host name of a Host header ("name:port", "[v6]:port", "name"), lower case, brackets kept.
+std::string host_name(const std::string& header) {
+  std::string host = header;
+  if (!host.empty() && host.front() == '[') {
+    const std::size_t close = host.find(']');
+    host = close == std::string::npos ? host : host.substr(0, close + 1);
+  } else if (const std::size_t colon = host.rfind(':'); colon != std::string::npos) {
+    host = host.substr(0, colon);
+  }
+  if (!host.empty() && host.back() == '.') host.pop_back();
+  return lower(host);
+}
+
+bool is_ip_literal(const std::string& host) {
+  unsigned char address[sizeof(in6_addr)];
+  if (inet_pton(AF_INET, host.c_str(), address) == 1) return true;
+  return host.size() > 2 && host.front() == '[' && host.back() == ']' &&
+         inet_pton(AF_INET6, host.substr(1, host.size() - 2).c_str(), address) == 1;
+}
+
+bool is_wildcard(const std::string& host) {
+  return host.empty() || host == "0.0.0.0" || host == "::" || host == "[::]";
+}
+
+// Binds like httplib's default, but without SO_REUSEPORT: with it a second server on the same
+// port would start too, and the kernel would spread connections over both.
+void exclusive_socket_options(socket_t socket) {
+  int yes = 1;
+  setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+}
+
 }  // namespace
 
 struct Server::Impl {
@@ -106,14 +157,39 @@ struct Server::Impl {
   explicit Impl(ServerOptions given) : options(std::move(given)), root(options.root) {
     http.set_default_headers(
         {{"X-Content-Type-Options", "nosniff"}, {"Referrer-Policy", "no-referrer"}});
-    // Read-only: every method but GET (and HEAD, which httplib answers from GET) is refused.
-    http.set_pre_routing_handler([](const httplib::Request& request, httplib::Response& response) {
-      if (request.method == "GET" || request.method == "HEAD") {
-        return httplib::Server::HandlerResponse::Unhandled;
+    http.set_socket_options(exclusive_socket_options);
+    // An answer's header and body leave in separate writes: without this, Nagle's algorithm
+    // holds the body until the client's delayed acknowledgement (~40 ms per request).
+    http.set_tcp_nodelay(true);
+    http.new_task_queue = [] { return new httplib::ThreadPool(kWorkerThreads); };
+    http.set_read_timeout(kReadTimeoutSeconds, 0);
+    http.set_keep_alive_timeout(kKeepAliveSeconds);
+    http.set_pre_routing_handler([this](const httplib::Request& request,
+                                        httplib::Response& response) {
+      // Read-only: every method but GET (and HEAD, which httplib answers from GET) is refused.
+      if (request.method != "GET" && request.method != "HEAD") {
+        response.set_header("Allow", "GET, HEAD");
+        reply_error(response, 405, "read-only: only GET and HEAD are served");
+        return httplib::Server::HandlerResponse::Handled;
       }
-      response.set_header("Allow", "GET, HEAD");
-      reply_error(response, 405, "read-only: only GET and HEAD are served");
-      return httplib::Server::HandlerResponse::Handled;
+      // A page elsewhere that makes its own name resolve to this machine (DNS rebinding) sends
+      // its own name as Host: only this server's names are answered.
+      for (std::size_t i = 0; i < request.get_header_value_count("Host"); ++i) {
+        const std::string host = host_name(request.get_header_value("Host", i));
+        if (!allowed_host(host)) {
+          reply_error(response, 403,
+                      "refused: '" + host + "' is not an address of this dashboard (open it as " +
+                          "http://127.0.0.1:" + std::to_string(port) + "/)");
+          return httplib::Server::HandlerResponse::Handled;
+        }
+      }
+      // httplib builds a multi-range answer whole in memory (ranges × file size): one range per
+      // request is all a browser asks for.
+      if (request.ranges.size() > 1) {
+        reply_error(response, 416, "one byte range per request");
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      return httplib::Server::HandlerResponse::Unhandled;
     });
     route("/api/index", [this](const httplib::Request&, httplib::Response& r) { index(r); });
     route("/api/run", [this](const httplib::Request& q, httplib::Response& r) { run(q, r); });
@@ -131,6 +207,23 @@ struct Server::Impl {
     http.set_error_handler([](const httplib::Request&, httplib::Response& response) {
       if (response.body.empty()) reply_error(response, response.status, "not found");
     });
+  }
+
+  // Loopback names and addresses, the host the server was told to bind, and — when it listens on
+  // every interface — any address literal and this machine's name.
+  bool allowed_host(const std::string& host) const {
+    static const std::vector<std::string> loopback = {"localhost", "127.0.0.1", "[::1]"};
+    if (std::find(loopback.begin(), loopback.end(), host) != loopback.end()) return true;
+    if (host.size() > 10 && host.compare(host.size() - 10, 10, ".localhost") == 0) return true;
+    if (host.rfind("127.", 0) == 0 && is_ip_literal(host)) return true;
+    const std::string configured = lower(options.host);
+    if (host == configured || host == "[" + configured + "]") return true;
+    if (!is_wildcard(configured)) return false;
+    if (is_ip_literal(host)) return true;
+    char name[256] = {};
+    if (gethostname(name, sizeof name - 1) != 0) return false;
+    const std::string machine = lower(name);
+    return host == machine || host.rfind(machine + ".", 0) == 0;
   }
 
   // Registers a GET handler whose refusals and errors become JSON answers.
@@ -151,9 +244,11 @@ struct Server::Impl {
 
   // The file a request's `path` parameter names inside the root.
   fs::path resolve(const ServedRoot& within, const std::string& relative) const {
+    if (!ServedRoot::nameable(relative)) throw Refusal{404, "no such file (the name is too long)"};
     const std::optional<fs::path> path = within.resolve(relative);
     if (!path) throw Refusal{403, "refused: the path leads outside the served directory"};
-    if (!fs::exists(*path)) throw Refusal{404, "no such file: " + relative};
+    std::error_code error;
+    if (!fs::exists(*path, error)) throw Refusal{404, "no such file: " + relative};
     return *path;
   }
 
@@ -196,46 +291,50 @@ struct Server::Impl {
 
   void run(const httplib::Request& request, httplib::Response& response) const {
     const fs::path directory = parameter_path(request);
-    if (!fs::is_directory(directory) || !is_run_directory(directory)) {
+    std::error_code error;
+    if (!fs::is_directory(directory, error) || !is_run_directory(root, directory)) {
       throw Refusal{404, "not a run directory: " + request.get_param_value("path")};
     }
     JsonWriter json;
     json.begin_object().key("path").value(root.relative(directory));
     json.key("name").value(directory.filename().string());
     json.key("config");
-    if (fs::is_regular_file(directory / "config.yaml")) {
-      json.value(read_text(directory / "config.yaml"));
+    if (const std::optional<fs::path> config = root.served_file(directory / "config.yaml")) {
+      json.value(read_text(*config));
     } else {
       json.null();
     }
     json.key("files").begin_array();
     for (const char* name : {"progress.csv", "eval.csv", "evaluation.csv", "model.policy",
                              "best_model.policy", "model.tdm"}) {
-      if (fs::is_regular_file(directory / name)) json.value(name);
+      if (root.served_file(directory / name)) json.value(name);
     }
     json.end_array();
     std::optional<Config> config;
     try {
-      if (fs::is_regular_file(directory / "config.yaml")) {
-        config = Config::load_file(directory / "config.yaml");
+      if (const std::optional<fs::path> file = root.served_file(directory / "config.yaml")) {
+        config = Config::load_file(*file);
       }
     } catch (const std::exception&) {  // the page shows the text as it is
     }
-    write_state(json, read_run_state(directory, config ? &*config : nullptr, held_locks()));
+    write_state(json,
+                read_run_state(root, directory, config ? &*config : nullptr, held_locks()));
     json.key("episodes").begin_array();
-    for (const fs::path& file : episode_files(directory)) {
+    for (const fs::path& file : episode_files(root, directory)) {
       json.begin_object().key("path").value(root.relative(file));
       json.key("name").value(file.filename().string());
-      std::error_code error;
-      json.key("bytes").value(static_cast<int64_t>(fs::file_size(file, error)));
+      const uint64_t bytes = fs::file_size(file, error);
+      json.key("bytes").value(static_cast<int64_t>(error ? 0 : bytes));
       try {
-        const PartialEpisode read = read_partial_episode(file);
-        json.key("frames").value(static_cast<int64_t>(read.episode.frames.size()));
+        if (!error && bytes > kMaxFileBytes) throw Error("too large to read");
+        // The frames are counted, not built: listing costs memory per frame, not per scene.
+        const EpisodeOutline read = outline_episode(file);
+        json.key("frames").value(read.frames());
         json.key("complete").value(read.problem.empty());
         json.key("problem").value(read.problem);
         json.key("return");
-        if (read.episode.summary) {
-          json.value(read.episode.summary->episode_return);
+        if (read.summary) {
+          json.value(read.summary->episode_return);
         } else {
           json.null();
         }
@@ -251,8 +350,11 @@ struct Server::Impl {
 
   void csv(const httplib::Request& request, httplib::Response& response) const {
     const fs::path file = parameter_path(request);
-    if (!fs::is_regular_file(file)) throw Refusal{404, "not a file"};
+    std::error_code error;
+    if (!fs::is_regular_file(file, error)) throw Refusal{404, "not a file"};
     if (file.extension() != ".csv") throw Refusal{400, "not a .csv file"};
+    // A bounded number of lines and problems per answer (CsvSliceLimits): the page asks again
+    // from next_offset while `more`.
     const CsvSlice slice = read_csv_slice(file, number_parameter(request, "offset", 0));
     JsonWriter json;
     json.begin_object().key("columns").begin_array();
@@ -265,25 +367,31 @@ struct Server::Impl {
     json.key("size").value(slice.size);
     json.key("restarted").value(slice.restarted);
     json.key("partial_line").value(slice.partial_line);
+    json.key("more").value(slice.more);
     json.key("problems").begin_array();
     for (const std::string& problem : slice.problems) json.value(problem);
-    json.end_array().end_object();
+    json.end_array();
+    json.key("problem_count").value(slice.problem_count);
+    json.end_object();
     reply_json(response, 200, json.str());
   }
 
   void episode(const httplib::Request& request, httplib::Response& response) const {
     const fs::path file = parameter_path(request);
-    if (!fs::is_regular_file(file)) throw Refusal{404, "not a file"};
+    std::error_code error;
+    if (!fs::is_regular_file(file, error)) throw Refusal{404, "not a file"};
     const uint64_t max_frames = number_parameter(request, "max_frames", 2000);
     if (max_frames < 2 || max_frames > 100000) throw Refusal{400, "max_frames must be 2..100000"};
+    if (fs::file_size(file, error) > kMaxFileBytes) throw Refusal{413, "too large to serve"};
     reply_json(response, 200,
-               episode_json(read_partial_episode(file), static_cast<int>(max_frames)));
+               episode_json(file, static_cast<int>(max_frames), options.episode_memory));
   }
 
   void raw_file(const ServedRoot& within, const std::string& relative,
                 httplib::Response& response) const {
     const fs::path file = resolve(within, relative);
-    if (!fs::is_regular_file(file)) throw Refusal{404, "not a file: " + relative};
+    std::error_code error;
+    if (!fs::is_regular_file(file, error)) throw Refusal{404, "not a file: " + relative};
     response.set_content(read_text(file), content_type(file));
   }
 

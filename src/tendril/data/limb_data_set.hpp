@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "tendril/data/table.hpp"
+#include "tendril/core/data_table.hpp"
 
 namespace tendril::data {
 

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 
-#include "tendril/data/table.hpp"
+#include "tendril/core/data_table.hpp"
 
 namespace tendril::data {
 

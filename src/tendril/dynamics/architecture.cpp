@@ -1,5 +1,8 @@
 #include "tendril/dynamics/architecture.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::dynamics {
@@ -109,7 +112,11 @@ void ArchitectureSpec::validate() const {
   within(hidden_size, 1, kMaxHiddenSize, "hidden_size");
   within(layers, 1, kMaxLayers, "layers");
   within(window, 1, kMaxWindow, "window");
-  require(output_bound > 0.0, "must be positive", "output_bound");
+  if (!(std::isfinite(output_bound) && output_bound > 0.0 && output_bound <= kMaxOutputBound)) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", output_bound);
+    throw Error(std::string("must lie in (0, 1e6], got ") + value, "output_bound");
+  }
   require(dropout >= 0.0 && dropout < 1.0, "must lie in [0, 1)", "dropout");
   if (kind == Architecture::kSeq2SeqAttention) {
     require(

@@ -51,6 +51,9 @@ struct ArchitectureSpec {
   static constexpr int kMaxHiddenSize = 8192;
   static constexpr int kMaxLayers = 32;
   static constexpr int kMaxWindow = 100000;
+  // Δx per step in normalised units: far above any robot's, low enough that bound · tanh(·)
+  // and its denormalisation stay finite in float32.
+  static constexpr double kMaxOutputBound = 1e6;
 
   Architecture kind = Architecture::kLstm;
   int state_dim = 4;

@@ -30,6 +30,13 @@ struct SquaredErrors {
     ErrorReport result;
     result.groups = groups;
     for (std::size_t g = 0; g < groups.size(); ++g) {
+      // A model whose outputs overflow (or a crafted file that slipped past the loader's checks)
+      // must not pass as an error of "nan".
+      if (counts[g] > 0 && !std::isfinite(sums[g])) {
+        throw Error("the model's predictions of " + groups[g].name +
+                        " are not finite (NaN or infinity): no error can be measured",
+                    "dynamics evaluation");
+      }
       result.rmse.push_back(counts[g] ? std::sqrt(sums[g] / static_cast<double>(counts[g]))
                                       : std::nan(""));
     }

@@ -9,8 +9,8 @@
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
-#include "tendril/dynamics/window_set.hpp"
 #include "tendril/dynamics/torch_threads.hpp"
+#include "tendril/dynamics/window_set.hpp"
 
 namespace tendril::dynamics {
 
@@ -118,6 +118,11 @@ FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool qu
   const double max_gap = segment_gap(data, e.max_gap);
   std::unique_ptr<Model> model = initial_model(e, data);
   const WindowSet windows(data, *model, max_gap);
+  // A window is `window` rows and the row after them, all in one segment.
+  require(e.training.epochs == 0 || !windows.ends(Split::kTrain).empty(),
+          "no training window fits: " +
+              data.describe_runs(Split::kTrain, model->spec().window + 1, max_gap),
+          data.source);
 
   fs::create_directories(run_directory);
   // Held while fitting: the dashboard shows the fit as running while a process holds it.

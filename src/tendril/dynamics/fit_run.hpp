@@ -14,7 +14,7 @@
 
 namespace tendril::dynamics {
 
-// One model-fitting experiment file (`tendril dynamics fit`):
+// One model-fitting experiment file (`tendril model fit`):
 //
 //   data:
 //     file: data/sma_limb/stiff_exploration_prepared.csv  # a prepared data set (prepared_csv.hpp)

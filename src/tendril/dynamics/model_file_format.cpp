@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -225,6 +226,14 @@ ModelFileContents decode_model_file(const std::string& bytes, const std::string&
     p.values.resize(static_cast<std::size_t>(count));
     std::memcpy(p.values.data(), bytes.data() + position, p.values.size() * sizeof(float));
     position += p.values.size() * sizeof(float);
+    // A crafted file may carry a correct checksum over weights no training produces.
+    for (std::size_t i = 0; i < p.values.size(); ++i) {
+      if (!std::isfinite(p.values[i])) {
+        throw Error("parameter '" + p.name + "' holds a non-finite value (" +
+                        std::to_string(p.values[i]) + ") at index " + std::to_string(i),
+                    file);
+      }
+    }
   }
   return contents;
 }

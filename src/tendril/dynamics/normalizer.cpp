@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "tendril/core/error.hpp"
 
@@ -10,6 +11,34 @@ namespace tendril::dynamics {
 Normalizer Normalizer::identity(int size) {
   return Normalizer{Eigen::VectorXd::Zero(size), Eigen::VectorXd::Ones(size)};
 }
+
+namespace {
+
+// `fitted` when its offsets and scales are finite; otherwise an Error naming the column, its
+// largest training value and the file and line it is on (a sum or a square overflowed).
+Normalizer checked(const Normalizer& fitted, const SequenceData& data) {
+  for (int c = 0; c < static_cast<int>(fitted.offset.size()); ++c) {
+    if (std::isfinite(fitted.offset(c)) && std::isfinite(fitted.scale(c))) continue;
+    const bool state = c < data.state_dim();
+    const int column = state ? c : c - data.state_dim();
+    const auto values = state ? data.states.col(column) : data.inputs.col(column);
+    int64_t largest = -1;
+    for (int64_t t = 0; t < data.rows(); ++t) {
+      if (data.split[t] != Split::kTrain) continue;
+      if (largest < 0 || std::abs(values(t)) > std::abs(values(largest))) largest = t;
+    }
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", values(largest));
+    throw Error("column '" + (state ? data.state_names : data.input_names)[column] +
+                    "': its values are too large to normalise (their mean or spread overflows); "
+                    "the largest, " +
+                    value + ", is on this line",
+                data.where(largest));
+  }
+  return fitted;
+}
+
+}  // namespace
 
 Normalizer Normalizer::fit(const SequenceData& data, Normalization kind) {
   const int columns = data.state_dim() + data.input_dim();
@@ -37,7 +66,7 @@ Normalizer Normalizer::fit(const SequenceData& data, Normalization kind) {
       result.offset(c) = 0.5 * (high(c) + low(c));
       if (high(c) > low(c)) result.scale(c) = 0.5 * (high(c) - low(c));
     }
-    return result;
+    return checked(result, data);
   }
   const Eigen::VectorXd mean = sum / static_cast<double>(count);
   Eigen::VectorXd squares = Eigen::VectorXd::Zero(columns);
@@ -50,7 +79,7 @@ Normalizer Normalizer::fit(const SequenceData& data, Normalization kind) {
     const double deviation = std::sqrt(squares(c) / static_cast<double>(count));
     if (deviation > 0.0) result.scale(c) = deviation;
   }
-  return result;
+  return checked(result, data);
 }
 
 void Normalizer::validate(int expected_size, const std::string& where) const {

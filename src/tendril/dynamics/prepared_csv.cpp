@@ -9,8 +9,8 @@
 #include <string_view>
 
 #include "tendril/core/atomic_file.hpp"
+#include "tendril/core/data_table.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/data/table.hpp"
 
 namespace tendril::dynamics {
 
@@ -67,9 +67,10 @@ SequenceData read_prepared_csv(const std::filesystem::path& file, const CsvColum
           file.string());
   const std::string text((std::istreambuf_iterator<char>(stream)),
                          std::istreambuf_iterator<char>());
+  data::reject_carriage_returns_only(text, file);
   data::verify_checksum(text, file);
   std::istringstream in(text);
-  // The data layer's files (data/table.hpp) open with '#' lines: format, columns, metadata,
+  // Data files (core/data_table.hpp) open with '#' lines: format, columns, metadata,
   // checksum.
   std::string line;
   int64_t line_number = 0;
@@ -97,9 +98,11 @@ SequenceData read_prepared_csv(const std::filesystem::path& file, const CsvColum
 
   std::vector<double> time, states, inputs;
   std::vector<Split> split;
+  std::vector<int64_t> lines;
   while (std::getline(in, line)) {
     ++line_number;
     if (trimmed(line).empty()) continue;
+    lines.push_back(line_number);
     const std::vector<std::string_view> fields = split_fields(line);
     if (fields.size() != header.size()) {
       throw Error("has " + std::to_string(fields.size()) + " fields, the header " +
@@ -138,6 +141,7 @@ SequenceData read_prepared_csv(const std::filesystem::path& file, const CsvColum
   data.inputs = Eigen::Map<const RowMatrixXd>(inputs.data(), n,
                                               static_cast<Eigen::Index>(input_columns.size()));
   data.split = std::move(split);
+  data.lines = std::move(lines);
   data.validate();
   return data;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "tendril/core/error.hpp"
 
@@ -16,11 +17,61 @@ void SequenceData::validate() const {
               static_cast<int64_t>(input_names.size()) == inputs.cols(),
           "column names do not match the state and input columns", source);
   require(states.cols() >= 1, "has no state columns", source);
+  require(lines.empty() || static_cast<int64_t>(lines.size()) == n,
+          "line numbers and rows differ in count", source);
   for (int64_t t = 0; t < n; ++t) {
     if (!std::isfinite(time(t)) || !states.row(t).allFinite() || !inputs.row(t).allFinite()) {
-      throw Error("non-finite value in row " + std::to_string(t), source);
+      throw Error("non-finite value", where(t));
     }
   }
+}
+
+std::string SequenceData::where(int64_t t) const {
+  if (t >= 0 && t < static_cast<int64_t>(lines.size())) {
+    return source + ":" + std::to_string(lines[static_cast<std::size_t>(t)]);
+  }
+  return source + ", row " + std::to_string(t);
+}
+
+namespace {
+
+std::string seconds(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g s", value);
+  return text;
+}
+
+}  // namespace
+
+std::string SequenceData::describe_runs(Split wanted, int64_t rows_needed, double max_gap) const {
+  const char* name = wanted == Split::kTrain ? "train" : "test";
+  int64_t longest = 0, longest_begin = -1, backward = 0, jumps = 0;
+  int64_t first_backward = -1, first_jump = -1;
+  for (const Segment& segment : segments(max_gap)) {
+    if (segment.split != wanted) continue;
+    if (segment.size() > longest) longest = segment.size(), longest_begin = segment.begin;
+    if (segment.begin == 0 || split[segment.begin - 1] != wanted) continue;
+    const double dt = time(segment.begin) - time(segment.begin - 1);
+    if (!(dt > 0.0)) {
+      if (backward++ == 0) first_backward = segment.begin;
+    } else if (jumps++ == 0) {
+      first_jump = segment.begin;
+    }
+  }
+  if (longest == 0) return std::string("it has no ") + name + " rows";
+  std::string text = std::string("its longest run of ") + name +
+                     " rows with time stamps increasing by at most " + seconds(max_gap) + " has " +
+                     std::to_string(longest) + " rows (from " + where(longest_begin) +
+                     "), a window needs " + std::to_string(rows_needed);
+  if (backward > 0) {
+    text += "; time stands still or goes back " + std::to_string(backward) + " times (first at " +
+            where(first_backward) + ": rows out of order?)";
+  }
+  if (jumps > 0) {
+    text += "; time jumps by more than " + seconds(max_gap) + " " + std::to_string(jumps) +
+            " times (first at " + where(first_jump) + ")";
+  }
+  return text;
 }
 
 double SequenceData::sample_period() const {

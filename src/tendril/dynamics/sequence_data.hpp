@@ -31,6 +31,9 @@ struct SequenceData {
   RowMatrixXd inputs;
   std::vector<Split> split;
   std::string source;  // where the data came from, for messages
+  // The line of `source` each row was read from (1-based), when it was read from a file;
+  // empty otherwise.
+  std::vector<int64_t> lines;
 
   int64_t rows() const { return time.size(); }
   int state_dim() const { return static_cast<int>(states.cols()); }
@@ -39,6 +42,14 @@ struct SequenceData {
   // Raises Error naming `source` unless sizes agree, names match the columns, and every value
   // is finite.
   void validate() const;
+
+  // Where row t came from, for messages: "<file>:<line>", or "<source>, row t".
+  std::string where(int64_t t) const;
+
+  // Why rows of `split` hold no run of `rows` consecutive rows that segments(max_gap) would
+  // keep together: the longest run, and the first places where time steps back or jumps (for an
+  // error that says where the data breaks up, e.g. rows out of order).
+  std::string describe_runs(Split split, int64_t rows, double max_gap) const;
 
   // The median time between consecutive rows that follow each other (seconds).
   double sample_period() const;

@@ -26,7 +26,7 @@ struct EnvSpec {
   std::function<std::unique_ptr<Env>(const Config& params)> factory;
   // Gymnasium's max_episode_steps: make() wraps the environment in a TimeLimit of this length.
   std::optional<int64_t> max_episode_steps;
-  // One line for `tendril list-envs`.
+  // One line for `tendril list envs`.
   std::string summary;
   // Optional: N environments of this id as one VecEnv that steps them together (a batched
   // learned model), behaving as N `make(id)` envs with episode statistics in a ThreadedVecEnv;

@@ -8,6 +8,7 @@
 
 #include "tendril/core/archive.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/core/policy.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/vector/vec_step.hpp"
 #include "tendril/envs/wrappers/running_mean_std.hpp"
@@ -32,12 +33,10 @@ struct ObservationNormalization {
 // `load_policy` turns back into a policy that acts identically. No LibTorch.
 //
 // A policy keeps scratch buffers: one policy must not act from two threads at once.
-class Policy {
+class Policy : public tendril::Policy {
  public:
-  virtual ~Policy() = default;
-
-  const Space& observation_space() const { return observation_space_; }
-  const Space& action_space() const { return action_space_; }
+  const Space& observation_space() const override { return observation_space_; }
+  const Space& action_space() const override { return action_space_; }
   // "actor_critic", "squashed_gaussian", "deterministic", "q_greedy".
   virtual std::string kind() const = 0;
 
@@ -45,9 +44,9 @@ class Policy {
   // bounds (a Discrete action is its index). `deterministic` takes the distribution's mode;
   // otherwise draws come from `rng`. Raises Error on a wrong observation size or a non-finite
   // observation.
-  void act(const envs::BatchMatrix& observations, bool deterministic, Rng& rng,
-           envs::BatchMatrix& actions) const;
-  Action act(const Observation& observation, bool deterministic, Rng& rng) const;
+  void act(const BatchMatrix& observations, bool deterministic, Rng& rng,
+           BatchMatrix& actions) const override;
+  Action act(const Observation& observation, bool deterministic, Rng& rng) const override;
 
   // Normalization applied to observations before the network (none by default).
   void set_observation_normalization(std::optional<ObservationNormalization> normalization) {

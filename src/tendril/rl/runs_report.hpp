@@ -7,7 +7,7 @@
 
 namespace tendril::rl {
 
-// A Markdown report of runs (`tendril summarize`): per configuration, the mean ± standard
+// A Markdown report of runs (`tendril report`): per configuration, the mean ± standard
 // deviation over its runs of the training mean at each of `steps` and at the end, of the final
 // evaluation, and its training time; then the same per run, with its steps/s. A training mean
 // at a step is training_mean_at's; a run that has not reached the step has none there.

@@ -68,7 +68,7 @@ std::string slurm_script(const Sweep& sweep, const SlurmOptions& options) {
   s += "#SBATCH --output=" + line_value((output / "slurm" / "%A_%a.out").string(), "output") + "\n";
   s += "set -euo pipefail\n";
   s += "cd " + quoted(options.working_directory.string()) + "\n";
-  s += "exec " + quoted(options.tendril.string()) + " sweep " +
+  s += "exec " + quoted(options.tendril.string()) + " sweep run " +
        quoted(options.sweep_file.string()) + " --rank \"$SLURM_ARRAY_TASK_ID\" --ranks " +
        std::to_string(tasks) + " --quiet\n";
   return s;

@@ -15,6 +15,7 @@
 #include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/log.hpp"
+#include "tendril/core/numerics_mode.hpp"
 #include "tendril/core/run_lock.hpp"
 #include "tendril/rl/replay_buffer.hpp"
 #include "tendril/rl/training_observers.hpp"
@@ -136,7 +137,7 @@ class Run {
     result.finished = result.timesteps >= experiment_.n_timesteps;
     result.interrupted = result.finished ? 0 : checkpoints_->interrupted();
     if (result.finished) {
-      const EvaluationResult final_eval = evaluation_->evaluate(result.timesteps);
+      const envs::RunResult final_eval = evaluation_->evaluate(result.timesteps);
       result.final_eval_mean = final_eval.mean_return();
       result.final_eval_std = final_eval.std_return();
       algorithm_->save_policy(directory_ / "model.policy");
@@ -262,6 +263,10 @@ fs::path newest_intact_checkpoint(const fs::path& run_directory,
 TrainResult train(const Experiment& experiment, const fs::path& run_directory,
                   const TrainOptions& options) {
   const std::string where = run_directory.string();
+  // A pause lands on a checkpoint: without checkpoints it would never come.
+  require(!options.stop_at || experiment.checkpoint_freq > 0,
+          "needs checkpoints to pause at: set checkpoint_freq (e.g. --set checkpoint_freq=100000)",
+          "--stop-at");
   require(!run_directory.empty(), "the run directory needs a name", "--out");
   std::error_code error;
   fs::create_directories(run_directory, error);
@@ -285,6 +290,9 @@ TrainResult train(const Experiment& experiment, const fs::path& run_directory,
   }
   remove_leftovers(run_directory);
   write_file_atomically(run_directory / "config.yaml", with_checksum(config_text), "config.yaml");
+  // Which build and CPU started the run: what decides whether a rerun is bit-identical
+  // (docs/reproducibility.md).
+  write_file_atomically(run_directory / "machine.yaml", machine_record(), "machine.yaml");
   return run(experiment, run_directory, options, std::move(lock), /*resuming=*/false);
 }
 

@@ -89,12 +89,9 @@ bool ScalarLogObserver::on_iteration(const Progress& p) {
   return true;
 }
 
-void ScalarLogObserver::log_evaluation(int64_t timesteps, const EvaluationResult& evaluation) {
-  double mean_length = 0.0;
-  for (int64_t length : evaluation.lengths) mean_length += static_cast<double>(length);
-  mean_length /= static_cast<double>(std::max<std::size_t>(evaluation.lengths.size(), 1));
+void ScalarLogObserver::log_evaluation(int64_t timesteps, const envs::RunResult& evaluation) {
   std::map<std::string, double> scalars = {{"eval/mean_reward", evaluation.mean_return()},
-                                           {"eval/mean_ep_length", mean_length}};
+                                           {"eval/mean_ep_length", evaluation.mean_length()}};
   if (const std::optional<double> rate = evaluation.success_rate()) {
     scalars["eval/success_rate"] = *rate;
   }
@@ -126,17 +123,20 @@ bool EvaluationObserver::on_iteration(const Progress& progress) {
   return true;
 }
 
-EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
-  // A stream of its own per evaluation point, so evaluating never disturbs training.
-  const uint64_t seed = experiment_.seed + 1000003 + timesteps;
-  EvaluationResult eval;
+envs::RunResult EvaluationObserver::evaluate(int64_t timesteps) {
+  // Seeds of their own per evaluation point, so evaluating never disturbs training: episode k
+  // resets with seed + k (the policy runner's rule).
+  envs::RunSettings settings;
+  settings.episodes = experiment_.eval_episodes;
+  settings.seed = experiment_.seed + 1000003 + timesteps;
+  settings.deterministic = experiment_.eval_deterministic;
+  envs::RunResult eval;
   if (experiment_.eval_n_envs > 1) {
     VecEnvOptions options = evaluation_env_options(experiment_);
     options.n_envs = experiment_.eval_n_envs;
     options.normalize_observation = options.normalize_reward = false;
     const std::unique_ptr<envs::VecEnv> envs = make_vec_env(options);
-    eval = evaluate_policy(algorithm_.policy(), *envs, experiment_.eval_episodes,
-                           experiment_.eval_deterministic, seed);
+    eval = envs::run_policy(algorithm_.policy(), *envs, settings);
   } else {
     std::unique_ptr<Env> env =
         make_evaluation_env(evaluation_env_options(experiment_), training_env_);
@@ -152,15 +152,11 @@ EvaluationResult EvaluationObserver::evaluate(int64_t timesteps) {
           {"actions", experiment_.eval_deterministic ? "deterministic" : "stochastic"}};
       env = std::make_unique<envs::EpisodeRecorder>(std::move(env), std::move(options));
     }
-    eval = evaluate_policy(algorithm_.policy(), *env, experiment_.eval_episodes,
-                           experiment_.eval_deterministic, seed);
+    eval = envs::run_policy(algorithm_.policy(), *env, settings);
   }
-  double mean_length = 0.0;
-  for (int64_t length : eval.lengths) mean_length += static_cast<double>(length);
-  mean_length /= static_cast<double>(eval.lengths.size());
   std::ostringstream row;
   row << timesteps << ',' << exact_text(eval.mean_return()) << ',' << exact_text(eval.std_return())
-      << ',' << mean_length << ',' << eval.returns.size() << ',';
+      << ',' << eval.mean_length() << ',' << eval.episodes.size() << ',';
   if (const std::optional<double> rate = eval.success_rate()) row << exact_text(*rate);
   row << '\n';
   append_to_file(directory_ / "eval.csv", row.str(), "eval.csv");
@@ -215,7 +211,7 @@ void EvaluationObserver::restore(int64_t up_to) {
 }
 
 // Recordings of evaluations past the checkpoint (complete or cut short by a kill) go with their
-// eval.csv rows; `tendril record`'s files and other names are left alone.
+// eval.csv rows; `tendril run --record`'s files and other names are left alone.
 void EvaluationObserver::remove_recordings_after(int64_t up_to) const {
   const fs::path folder = directory_ / "episodes";
   if (!fs::is_directory(folder)) return;

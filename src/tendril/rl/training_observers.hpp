@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "tendril/core/scalar_log.hpp"
+#include "tendril/envs/runner/policy_runner.hpp"
 #include "tendril/rl/algorithm.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/experiment.hpp"
 
 namespace tendril::rl {
@@ -23,7 +23,7 @@ class ScalarLogObserver : public Observer {
   bool on_iteration(const Progress& progress) override;
   // An evaluation into the event file under SB3's EvalCallback names: eval/mean_reward,
   // eval/mean_ep_length and, for envs that report success, eval/success_rate.
-  void log_evaluation(int64_t timesteps, const EvaluationResult& evaluation);
+  void log_evaluation(int64_t timesteps, const envs::RunResult& evaluation);
 
  private:
   ScalarLog log_;
@@ -44,7 +44,7 @@ class EvaluationObserver : public Observer {
                      Algorithm& algorithm, const envs::VecEnv& training_env, bool resuming);
   bool on_iteration(const Progress& progress) override;
   // Evaluates now (the final evaluation), records it and returns it.
-  EvaluationResult evaluate(int64_t timesteps);
+  envs::RunResult evaluate(int64_t timesteps);
   // Every evaluation is also logged to `log` (the TensorBoard event file); none when null.
   void report_to(ScalarLogObserver* log) { log_ = log; }
 

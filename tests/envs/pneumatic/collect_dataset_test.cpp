@@ -27,13 +27,13 @@ class CollectPneumatic : public testing::ScratchDirectoryTest {
 TEST_F(CollectPneumatic, RecordsTheProtocolsRowsAndTheirProvenance) {
   const auto file = directory_ / "twin.csv";
   const CollectionReport report =
-      collect_pneumatic_dataset(config(), file, "tendril collect-pneumatic x.yaml");
+      collect_pneumatic_dataset(config(), file, "tendril data collect x.yaml");
   EXPECT_EQ(report.rows, 40);
   const PneumaticDataset data = read_pneumatic_dataset(file);
   EXPECT_EQ(data.size(), 40);
   EXPECT_EQ(data.tips_mm, report.data.tips_mm);
   EXPECT_DOUBLE_EQ(data.time_s[39], 3.9);
-  EXPECT_EQ(data.meta("command"), "tendril collect-pneumatic x.yaml");
+  EXPECT_EQ(data.meta("command"), "tendril data collect x.yaml");
   EXPECT_EQ(data.meta("robot"), "PneumaticArm/Robot-v0");
   ASSERT_TRUE(data.has_pressures());
   EXPECT_EQ(data.pressures_bar.row(0).maxCoeff(), 0.0);
@@ -49,7 +49,7 @@ TEST_F(CollectPneumatic, RecordsTheProtocolsRowsAndTheirProvenance) {
   EXPECT_LE(data.commands_bar.maxCoeff(), 1.5);
   // The same configuration and seed give the same file.
   const auto again = directory_ / "again.csv";
-  collect_pneumatic_dataset(config(), again, "tendril collect-pneumatic x.yaml");
+  collect_pneumatic_dataset(config(), again, "tendril data collect x.yaml");
   EXPECT_EQ(read_pneumatic_dataset(again).tips_mm, data.tips_mm);
 }
 

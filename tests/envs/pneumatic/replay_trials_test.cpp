@@ -44,12 +44,12 @@ TEST_F(ReplayTrials, TheDeterministicTwinRepeatsAndDamageShowsAsAGap) {
   EXPECT_EQ(report.module_3_gap_mm.col(0).maxCoeff(), 0.0);
   EXPECT_GT(report.module_3_gap_mm.col(1).maxCoeff(), 1.0);
 
-  write_replay_report(report, directory_, "tendril replay-pneumatic r.yaml");
+  write_replay_report(report, directory_, "tendril data replay r.yaml");
   std::ifstream summary(directory_ / "replay_gap.csv");
   std::string first, header;
   std::getline(summary, first);
   std::getline(summary, header);
-  EXPECT_EQ(first, "# tendril replay-pneumatic r.yaml");
+  EXPECT_EQ(first, "# tendril data replay r.yaml");
   EXPECT_EQ(header, "scenario,trial,module,mad_from_reference_mm,mad_from_own_base_mm");
   EXPECT_NE(error_message([&] { write_replay_report(report, directory_, "again"); }).find("exists"),
             std::string::npos);

@@ -2,11 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 
+#include "support/evaluation.hpp"
+#include "support/learning_seed.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
-#include "tendril/rl/evaluation.hpp"
 #include "tendril/rl/ppo/ppo.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
@@ -44,27 +46,30 @@ std::unique_ptr<envs::VecEnv> pendulum(int n_envs) {
   return make_vec_env(options);
 }
 
-EvaluationResult train_and_evaluate(const std::string& id, const std::string& env_params,
-                                    const std::string& algo, int64_t budget, uint64_t seed) {
+envs::RunResult train_and_evaluate(const std::string& id, const std::string& env_params,
+                                   const std::string& algo, int64_t budget, uint64_t seed) {
   VecEnvOptions options;
   options.id = id;
   options.params = Config::parse(env_params);
   auto env = make_vec_env(options);
+  seed = testing::learning_seed(seed);
   Trpo trpo(*env, TrpoConfig::from_config(Config::parse(algo)), seed);
   trpo.learn(budget);
   auto evaluation_env = envs::make(id, Config::parse(env_params));
-  return evaluate_policy(trpo.policy(), *evaluation_env, 20, /*deterministic=*/true, seed + 1000);
+  envs::RunResult result = testing::evaluate(trpo.policy(), *evaluation_env, 20, seed + 1000);
+  std::printf("%s: return %.1f\n", id.c_str(), result.mean_return());
+  return result;
 }
 
 // SB3's identity thresholds: ≥ 90 of 100 per episode over 20 deterministic episodes.
 TEST(TrpoIdentity, SolvesDiscreteIdentity) {
-  const EvaluationResult result = train_and_evaluate(
+  const envs::RunResult result = train_and_evaluate(
       "Identity-v0", "n: 10", "n_steps: 512\ngamma: 0.5\npolicy: {net_arch: [64]}\n", 5000, 1);
   EXPECT_GE(result.mean_return(), 90.0);
 }
 
 TEST(TrpoIdentity, SolvesBoxIdentity) {
-  const EvaluationResult result =
+  const envs::RunResult result =
       train_and_evaluate("IdentityBox-v0", "eps: 0.5",
                          "n_steps: 512\ngamma: 0.5\npolicy: {net_arch: [64]}\n", 5000, 1);
   EXPECT_GE(result.mean_return(), 90.0);

@@ -188,7 +188,7 @@ export async function showRun(container, query) {
 function episodeList(run) {
   if (run.episodes.length === 0) {
     if (run.kind !== 'training') return h('p', { class: 'muted' }, 'None.');
-    return h('p', { class: 'muted' }, 'None. ', h('code', {}, `tendril record ${run.path || '.'}`), ' records some.');
+    return h('p', { class: 'muted' }, 'None. ', h('code', {}, `tendril run ${run.path || '.'} --record ${run.path || '.'}/episodes`), ' records some.');
   }
   return h('table', { class: 'episodes' },
     h('thead', {}, h('tr', {}, h('th', {}, 'file'), h('th', {}, 'frames'), h('th', {}, 'return'), h('th', {}, ''))),

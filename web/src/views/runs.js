@@ -16,7 +16,7 @@ export function statusBadge(run) {
   const title = {
     running: `a process (PID ${run.pid}) is writing it now`,
     finished: run.kind === 'fit' ? 'the fit ended and evaluated its model' : 'training ended: model.policy is written',
-    paused: 'stopped at a checkpoint: tendril train --resume continues it',
+    paused: 'stopped at a checkpoint: tendril resume continues it',
     stopped: 'stopped without a checkpoint to resume from',
   }[s];
   return h('span', { class: `status status-${s}`, title }, text);

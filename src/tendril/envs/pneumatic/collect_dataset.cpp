@@ -93,6 +93,9 @@ CollectionReport collect_pneumatic_dataset(const Config& config,
   meta.emplace_back("command", invocation);
   meta.emplace_back("robot", id);
   meta.emplace_back("rows", std::to_string(rows));
+  // What the regulators accept: a reader refuses a command beyond it (a damaged file).
+  meta.emplace_back("command_ceiling_bar",
+                    shortest_text(static_cast<double>(robot->action_space().high().maxCoeff())));
   std::ostringstream period_text;
   period_text << period;
   meta.emplace_back("period_s", period_text.str());

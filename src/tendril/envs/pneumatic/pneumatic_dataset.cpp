@@ -3,11 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 
-#include "tendril/core/atomic_file.hpp"
+#include "tendril/core/data_table.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/envs/pneumatic/decimal_text.hpp"
 
 namespace tendril::envs::pneumatic {
 
@@ -15,27 +13,99 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string_view> split(std::string_view line, char separator) {
-  std::vector<std::string_view> fields;
-  size_t start = 0;
-  while (true) {
-    const size_t end = line.find(separator, start);
-    fields.push_back(line.substr(start, end == std::string_view::npos ? end : end - start));
-    if (end == std::string_view::npos) return fields;
-    start = end + 1;
+// The first line of the earlier format, which carried no checksum.
+constexpr const char* kUncheckedTitle = "# tendril pneumatic-arm data set v1";
+
+std::string chamber_column(const std::string& quantity, int m, int c) {
+  return quantity + "_m" + std::to_string(m) + "_c" + std::to_string(c) + "_bar";
+}
+
+data::TableSchema make_schema(bool with_pressures) {
+  using data::ColumnSpec;
+  constexpr int kExact = ColumnSpec::kShortest;
+  data::TableSchema schema{with_pressures ? "tendril.pneumatic_arm.data_set v2"
+                                          : "tendril.pneumatic_arm.data_set_without_pressures v2",
+                           {}};
+  schema.columns.push_back(
+      {"time_s", kExact, {}, "s since the recording began, strictly increasing"});
+  const auto chambers = [&](const std::string& quantity, const std::string& description) {
+    for (int m = 1; m <= 3; ++m) {
+      for (int c = 1; c <= 3; ++c) {
+        schema.columns.push_back(
+            {chamber_column(quantity, m, c),
+             kExact,
+             {},
+             description + " of module " + std::to_string(m) + ", chamber " + std::to_string(c)});
+      }
+    }
+  };
+  chambers("command",
+           "bar, sent at time_s and held until the next row (0 to the command ceiling),");
+  if (with_pressures) chambers("pressure", "bar, measured by the regulator at time_s,");
+  for (int m = 1; m <= 3; ++m) {
+    for (const char* axis : {"x", "y", "z"}) {
+      schema.columns.push_back({"tip_m" + std::to_string(m) + "_" + axis + "_mm",
+                                kExact,
+                                {},
+                                std::string("mm, tip of module ") + std::to_string(m) + ", " +
+                                    axis + " in the robot frame (z negative downward), at time_s"});
+    }
   }
+  return schema;
 }
 
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
-  while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
-  return text;
+std::string shortest(double value) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
 }
 
-std::string join(const std::vector<std::string>& names) {
-  std::string line;
-  for (size_t i = 0; i < names.size(); ++i) line += (i ? "," : "") + names[i];
-  return line;
+// The commands' upper bound: the metadata's command_ceiling_bar, else the regulators' 1.5 bar.
+double command_ceiling(const std::vector<std::pair<std::string, std::string>>& metadata,
+                       const std::string& where) {
+  for (const auto& [key, value] : metadata) {
+    if (key != "command_ceiling_bar") continue;
+    double ceiling = 0.0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), ceiling);
+    if (error != std::errc() || end != value.data() + value.size() || !std::isfinite(ceiling) ||
+        ceiling <= 0.0) {
+      throw Error("command_ceiling_bar: '" + value + "' is not a positive number", where);
+    }
+    return ceiling;
+  }
+  return kDefaultCommandCeilingBar;
+}
+
+// The metadata's `rows`, when it has one.
+std::optional<long long> stated_rows(const std::vector<std::pair<std::string, std::string>>& meta,
+                                     const std::string& where) {
+  for (const auto& [key, value] : meta) {
+    if (key != "rows") continue;
+    long long rows = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), rows);
+    if (error != std::errc() || end != value.data() + value.size() || rows < 0) {
+      throw Error("rows: '" + value + "' is not a number of rows", where);
+    }
+    return rows;
+  }
+  return std::nullopt;
+}
+
+// The first row that breaks what a recording must satisfy, with why; -1 if none.
+std::pair<Eigen::Index, std::string> first_bad_row(const PneumaticDataset& data, double ceiling) {
+  for (Eigen::Index k = 0; k < data.time_s.size(); ++k) {
+    if (k > 0 && !(data.time_s[k] > data.time_s[k - 1])) {
+      return {k, "time_s must increase from row to row"};
+    }
+    for (int c = 0; c < 9; ++c) {
+      const double command = data.commands_bar(k, c);
+      if (command < 0.0 || command > ceiling) {
+        return {k, "column " + chamber_column("command", c / 3 + 1, c % 3 + 1) + ": " +
+                       shortest(command) + " bar lies outside [0, " + shortest(ceiling) +
+                       "] (the regulators' command range)"};
+      }
+    }
+  }
+  return {-1, ""};
 }
 
 }  // namespace
@@ -47,21 +117,15 @@ std::optional<std::string> PneumaticDataset::meta(std::string_view key) const {
   return std::nullopt;
 }
 
+const data::TableSchema& pneumatic_dataset_schema(bool with_pressures) {
+  static const data::TableSchema with = make_schema(true), without = make_schema(false);
+  return with_pressures ? with : without;
+}
+
 std::vector<std::string> pneumatic_dataset_columns(bool with_pressures) {
-  std::vector<std::string> names{"time_s"};
-  const auto chambers = [&](const std::string& quantity) {
-    for (int m = 1; m <= 3; ++m) {
-      for (int c = 1; c <= 3; ++c) {
-        names.push_back(quantity + "_m" + std::to_string(m) + "_c" + std::to_string(c) + "_bar");
-      }
-    }
-  };
-  chambers("command");
-  if (with_pressures) chambers("pressure");
-  for (int m = 1; m <= 3; ++m) {
-    for (const char* axis : {"x", "y", "z"}) {
-      names.push_back("tip_m" + std::to_string(m) + "_" + axis + "_mm");
-    }
+  std::vector<std::string> names;
+  for (const data::ColumnSpec& column : pneumatic_dataset_schema(with_pressures).columns) {
+    names.push_back(column.name);
   }
   return names;
 }
@@ -76,123 +140,71 @@ void write_pneumatic_dataset(const fs::path& file, const PneumaticDataset& data)
   require(data.time_s.allFinite() && data.commands_bar.allFinite() &&
               data.pressures_bar.allFinite() && data.tips_mm.allFinite(),
           "every value must be finite", where);
-  for (Eigen::Index k = 1; k < rows; ++k) {
-    require(data.time_s[k] > data.time_s[k - 1], "times must increase", where);
-  }
   for (const auto& [key, value] : data.metadata) {
-    require(!key.empty() && key.find_first_of(":\n\r") == std::string::npos && trim(key) == key,
+    require(!key.empty() && key.find_first_of(":\n\r") == std::string::npos && key.front() != ' ' &&
+                key.back() != ' ',
             "metadata key '" + key + "' must be non-empty without ':', line breaks or edge spaces",
             where);
     require(value.find_first_of("\n\r") == std::string::npos,
             "metadata value of '" + key + "' must be one line", where);
   }
+  const std::optional<long long> stated = stated_rows(data.metadata, where);
+  require(!stated || *stated == rows,
+          "its metadata says rows: " + std::to_string(stated.value_or(0)) + ", it holds " +
+              std::to_string(rows),
+          where);
+  const auto [row, why] = first_bad_row(data, command_ceiling(data.metadata, where));
+  if (row >= 0) throw Error(why, where + ", row " + std::to_string(row));
   require(!fs::exists(file), "the data set file exists; nothing was overwritten", where);
 
-  std::string text = std::string(kPneumaticDatasetTitle) + "\n";
-  for (const auto& [key, value] : data.metadata) text += "# " + key + ": " + value + "\n";
-  text += join(pneumatic_dataset_columns(data.has_pressures())) + "\n";
-  const auto append_row = [&](const PneumaticDataset::Columns& columns, Eigen::Index k) {
-    for (int c = 0; c < 9; ++c) {
-      text += ',';
-      text += shortest_text(columns(k, c));
-    }
-  };
-  for (Eigen::Index k = 0; k < rows; ++k) {
-    text += shortest_text(data.time_s[k]);
-    append_row(data.commands_bar, k);
-    if (data.has_pressures()) append_row(data.pressures_bar, k);
-    append_row(data.tips_mm, k);
-    text += '\n';
-  }
+  data::Table table;
+  table.metadata = data.metadata;
+  const int width = data.has_pressures() ? 28 : 19;
+  table.values.resize(rows, width);
+  table.values.col(0) = data.time_s;
+  table.values.middleCols(1, 9) = data.commands_bar;
+  if (data.has_pressures()) table.values.middleCols(10, 9) = data.pressures_bar;
+  table.values.rightCols(9) = data.tips_mm;
   if (!file.parent_path().empty()) fs::create_directories(file.parent_path());
-  write_file_atomically(file, text, "data set");
+  data::write_table(file, table, pneumatic_dataset_schema(data.has_pressures()));
 }
 
 PneumaticDataset read_pneumatic_dataset(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw Error("cannot open the data set file", file.string());
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-
-  int line_number = 0;
-  const auto fail = [&](const std::string& what) -> Error {
-    return Error(what, file.string() + ":" + std::to_string(line_number));
-  };
-  std::vector<std::string_view> lines = split(text, '\n');
-  if (!lines.empty() && lines.back().empty()) lines.pop_back();  // the final newline
-  for (std::string_view& line : lines) {
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  const std::string format = data::read_table_format(file);
+  if (format.empty()) {
+    std::ifstream in(file, std::ios::binary);
+    std::string first;
+    std::getline(in, first);
+    if (!first.empty() && first.back() == '\r') first.pop_back();
+    if (first == kUncheckedTitle) {
+      throw Error(
+          "a data set of the earlier format, which carries no checksum (damage to it "
+          "cannot be told): collect it again — its '# command:' line says how",
+          file.string() + ":1");
+    }
   }
+  const bool with_pressures = format != pneumatic_dataset_schema(false).format;
+  const data::Table table = data::read_table(file, pneumatic_dataset_schema(with_pressures));
+  const std::string where = file.string();
+  if (table.rows() == 0) throw Error("the data set has no rows", where);
 
   PneumaticDataset data;
-  size_t index = 0;
-  line_number = 1;
-  if (lines.empty() || lines[0] != kPneumaticDatasetTitle) {
-    throw fail("the first line must be '" + std::string(kPneumaticDatasetTitle) + "'");
-  }
-  for (index = 1; index < lines.size() && !lines[index].empty() && lines[index][0] == '#';
-       ++index) {
-    line_number = static_cast<int>(index) + 1;
-    // "# key: value": the key up to the first ':', the value verbatim after ": ".
-    const std::string_view body = lines[index].substr(1);
-    const size_t colon = body.find(':');
-    const std::string_view key =
-        colon == std::string_view::npos ? std::string_view() : body.substr(1, colon - 1);
-    if (body.empty() || body[0] != ' ' || key.empty() || trim(key) != key) {
-      throw fail("metadata lines must read '# key: value'");
-    }
-    std::string_view value = body.substr(colon + 1);
-    if (!value.empty() && value[0] == ' ') value.remove_prefix(1);
-    data.metadata.emplace_back(std::string(key), std::string(value));
-  }
-  line_number = static_cast<int>(index) + 1;
-  if (index >= lines.size()) throw fail("the header line of column names is missing");
-  bool with_pressures = false;
-  if (lines[index] == join(pneumatic_dataset_columns(true))) {
-    with_pressures = true;
-  } else if (lines[index] != join(pneumatic_dataset_columns(false))) {
-    throw fail("the header must list the columns " + join(pneumatic_dataset_columns(false)) +
-               " (with the pressure_m*_c*_bar columns after the commands, or without them)");
-  }
-  const int width = with_pressures ? 28 : 19;
-  const size_t first_row = index + 1;
-  const Eigen::Index rows = static_cast<Eigen::Index>(lines.size() - first_row);
-  if (rows == 0) throw fail("the data set has no rows");
-  data.time_s.resize(rows);
-  data.commands_bar.resize(rows, 9);
-  data.tips_mm.resize(rows, 9);
-  if (with_pressures) data.pressures_bar.resize(rows, 9);
+  data.metadata = table.metadata;
+  data.time_s = table.values.col(0);
+  data.commands_bar = table.values.middleCols(1, 9);
+  if (with_pressures) data.pressures_bar = table.values.middleCols(10, 9);
+  data.tips_mm = table.values.rightCols(9);
 
-  const std::vector<std::string> names = pneumatic_dataset_columns(with_pressures);
-  std::vector<double> values(width);
-  for (Eigen::Index k = 0; k < rows; ++k) {
-    line_number = static_cast<int>(first_row + k) + 1;
-    const std::vector<std::string_view> fields = split(lines[first_row + k], ',');
-    if (static_cast<int>(fields.size()) != width) {
-      throw fail("expected " + std::to_string(width) + " fields, got " +
-                 std::to_string(fields.size()));
-    }
-    for (int c = 0; c < width; ++c) {
-      const std::string_view field = fields[c];
-      double value = 0.0;
-      const auto result = std::from_chars(field.data(), field.data() + field.size(), value);
-      if (field.empty() || result.ec != std::errc() || result.ptr != field.data() + field.size() ||
-          !std::isfinite(value)) {
-        throw fail("column " + names[c] + ": '" + std::string(field) + "' is not a finite number");
-      }
-      values[c] = value;
-    }
-    if (k > 0 && !(values[0] > data.time_s[k - 1])) {
-      throw fail("time_s must increase from row to row");
-    }
-    data.time_s[k] = values[0];
-    for (int c = 0; c < 9; ++c) {
-      data.commands_bar(k, c) = values[1 + c];
-      if (with_pressures) data.pressures_bar(k, c) = values[10 + c];
-      data.tips_mm(k, c) = values[width - 9 + c];
-    }
+  const std::optional<long long> stated = stated_rows(data.metadata, where);
+  if (stated && *stated != table.rows()) {
+    throw Error("its header says rows: " + std::to_string(*stated) + ", it holds " +
+                    std::to_string(table.rows()) +
+                    " (cut short or joined with another file?); the last row is " +
+                    table.where(table.rows() - 1),
+                where);
   }
+  const auto [row, why] = first_bad_row(data, command_ceiling(data.metadata, where));
+  if (row >= 0) throw Error(why, table.where(row));
   return data;
 }
 

@@ -8,15 +8,23 @@
 #include <utility>
 #include <vector>
 
+namespace tendril::data {
+struct TableSchema;
+}
+
 namespace tendril::envs::pneumatic {
 
 // A recording of the pneumatic arm (seed 002 §III-C: "tip movements of all three modules …
-// for a dynamically saturating pressure signal for 10 min (6000 points at 10 Hz)"), and its
-// file: plain CSV that any CSV reader takes once it skips lines starting with '#'.
+// for a dynamically saturating pressure signal for 10 min (6000 points at 10 Hz)"), in the one
+// data-set format of every robot (core/data_table.hpp): CSV with a commented header that carries
+// the format, the columns, the metadata and a CRC-32C of the file, so any CSV reader that skips '#'
+// lines takes it, and tendril refuses it when changed, damaged or cut short.
 //
-//   # tendril pneumatic-arm data set v1
-//   # <key>: <value>                      (metadata, any number of lines, e.g. the command,
-//   # ...                                  the robot's parameters, the signal's, the seed)
+//   # format: tendril.pneumatic_arm.data_set v2        (… _without_pressures v2: no pressures)
+//   # column time_s: …                                  (one line per column)
+//   # <key>: <value>                                    (metadata: the command, the robot, the
+//   # ...                                                rows, the command ceiling, the config)
+//   # crc32c: <8 hex digits>
 //   time_s,command_m1_c1_bar,…,command_m3_c3_bar[,pressure_m1_c1_bar,…,pressure_m3_c3_bar],tip_m1_x_mm,tip_m1_y_mm,tip_m1_z_mm,…,tip_m3_z_mm
 //   0,0.53,…
 //
@@ -26,7 +34,8 @@ namespace tendril::envs::pneumatic {
 // and the commands (bar) sent at t_k and held until t_{k+1}. So x_{k+1} is the response to
 // command_k, as in the seed's model x_{t+1} = F(x_t, x_{t−1}, τ_t, τ_{t−1}, τ_{t−2}).
 // Modules and chambers count from 1 in column names (the paper's counting); chamber c of module
-// m is flat index 3 (m − 1) + (c − 1) in the matrices below.
+// m is flat index 3 (m − 1) + (c − 1) in the matrices below. Numbers are written as the shortest
+// text that reads back exactly, so a file reads back bit for bit.
 struct PneumaticDataset {
   using Columns = Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::RowMajor>;
 
@@ -41,20 +50,29 @@ struct PneumaticDataset {
   std::optional<std::string> meta(std::string_view key) const;
 };
 
-inline constexpr const char* kPneumaticDatasetTitle = "# tendril pneumatic-arm data set v1";
+// The regulators' range (seed 002: 0 to 1.5 bar) when a data set's metadata names no
+// `command_ceiling_bar`.
+inline constexpr double kDefaultCommandCeilingBar = 1.5;
+
+// The two layouts: with the measured pressures and without.
+const data::TableSchema& pneumatic_dataset_schema(bool with_pressures);
 
 // The header line's column names, in order.
 std::vector<std::string> pneumatic_dataset_columns(bool with_pressures);
 
-// Writes `data` atomically (numbers as the shortest text that reads back exactly). Raises
-// tendril::Error, writing nothing, if `file` exists, if the matrices disagree in rows, if a
-// value is not finite, if times do not increase, or if a metadata key or value is unfit for a
+// Writes `data` atomically with its checksum. Raises tendril::Error, writing nothing, if `file`
+// exists, if the matrices disagree in rows, if a value is not finite, if times do not increase,
+// if a command lies outside [0, ceiling] (the metadata's command_ceiling_bar, else 1.5 bar), if
+// the metadata's `rows` disagrees with the rows, or if a metadata key or value is unfit for a
 // one-line "# key: value" (empty key, ':' or a line break in the key, a line break in the value).
 void write_pneumatic_dataset(const std::filesystem::path& file, const PneumaticDataset& data);
 
-// Reads a data set file strictly: the title line, metadata lines, the header with exactly one of
-// the two column lists, then at least one row of finite numbers with increasing time. Anything
-// else raises tendril::Error naming "<file>:<line>" and what was wrong.
+// Reads a data set file strictly (data::read_table: format, columns, every number, the checksum,
+// a file cut short), then checks what the numbers must satisfy: at least one row, time
+// increasing, every command within [0, ceiling], and as many rows as its `rows` line says.
+// Anything else raises tendril::Error naming "<file>:<line>" and what was wrong. A file of the
+// earlier format without a checksum ("# tendril pneumatic-arm data set v1") is refused with how
+// to collect it again.
 PneumaticDataset read_pneumatic_dataset(const std::filesystem::path& file);
 
 }  // namespace tendril::envs::pneumatic

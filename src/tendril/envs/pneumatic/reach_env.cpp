@@ -35,7 +35,7 @@ void ReachObservationSpec::validate() const {
 
 ReachObservationSpec ReachObservationSpec::twin_dataset() {
   // Per-coordinate extremes of the tips in the file that
-  //   tendril collect-pneumatic configs/pneumatic_arm/collect_twin_s0.yaml
+  //   tendril data collect configs/pneumatic_arm/collect_twin_s0.yaml
   // writes (6000 rows), rounded outward to 0.1 mm.
   ReachObservationSpec spec;
   spec.tip_min << -38.9, -32.4, -227.4, -107.9, -110.8, -451.1, -220.5, -235.1, -672.1;

@@ -72,11 +72,11 @@ class ReachEnv : public Env {
   static constexpr const char* kRobotId = "PneumaticArm/Reach-v0";
   // PneumaticArm/LearnedReach-v0: the task on a learned model of the arm (ModelDynamics), for
   // training (seed 002 §IV-A). Besides setup_from's parameters:
-  //   model: FILE_OR_RUN   a model file or a `tendril dynamics fit` run (9 tips, 9 pressures),
+  //   model: FILE_OR_RUN   a model file or a `tendril model fit` run (9 tips, 9 pressures),
   //                        opened through install_dynamics_model_loader; without it
   //                        LinearArmModel, a torch-free stand-in (not the arm)
   //   rest_mm: [9]         the tips with every chamber vented, where episodes start; else
-  //   rest_from: FILE      the first row of a collect-pneumatic data set (the arm at rest
+  //   rest_from: FILE      the first row of a pneumatic data set (tendril data collect) (the arm at rest
   //                        before the signal's first command); else the stand-in's rest
   static std::unique_ptr<Env> create_on_model(const Config& params);
   static constexpr const char* kModelId = "PneumaticArm/LearnedReach-v0";

@@ -15,7 +15,7 @@ namespace tendril::envs::sma_limb {
 // model's sampling periods. Observation, reward, terminations and resets: LearnedReachBatch and
 // reach_outcome. Episodes last at most 250 steps (the registry's time limit).
 //
-// Parameters (`env.params`): model (a model file or a `tendril dynamics fit` run directory,
+// Parameters (`env.params`): model (a model file or a `tendril model fit` run directory,
 // opened through install_dynamics_model_loader; default: LinearLimbModel, a torch-free stand-in
 // for tests and smoke runs, not the limb), seed (default 0), and the options of
 // LearnedReachOptions::from_config.

@@ -27,7 +27,8 @@ LearnedReachVecEnv::LearnedReachVecEnv(std::shared_ptr<DynamicsModel> model,
       max_episode_steps_(max_episode_steps),
       observation_space_(batch_.observation_space()),
       action_space_(LearnedReachBatch::action_space()),
-      episodes_(num_envs) {
+      episodes_(num_envs),
+      next_reset_seeds_(static_cast<std::size_t>(num_envs)) {
   const int n = batch_.num_envs();
   const int size = observation_space_.size();
   result_.observations = BatchMatrix::Zero(n, size);
@@ -46,7 +47,13 @@ std::unique_ptr<VecEnv> LearnedReachVecEnv::create(const Config& params, int num
                                               num_envs, seed, max_episode_steps);
 }
 
+void LearnedReachVecEnv::seed_next_reset(int env, uint64_t seed) {
+  require(env >= 0 && env < num_envs(), "no environment " + std::to_string(env), kWhere);
+  next_reset_seeds_.at(static_cast<std::size_t>(env)) = seed;
+}
+
 const BatchMatrix& LearnedReachVecEnv::reset(std::optional<uint64_t> seed) {
+  next_reset_seeds_.assign(static_cast<std::size_t>(num_envs()), std::nullopt);
   for (int i = 0; i < num_envs(); ++i) {
     batch_.reset(i,
                  seed ? std::optional<uint64_t>(*seed + static_cast<uint64_t>(i)) : std::nullopt);
@@ -87,7 +94,8 @@ const VecStep& LearnedReachVecEnv::step(const BatchMatrix& actions) {
       result_.infos[i].set(info_keys::kEpisodeReturn, episode.episode_return);
       result_.infos[i].set(info_keys::kEpisodeLength, static_cast<double>(episode.length));
       episode = Episode{};
-      batch_.reset(i);
+      batch_.reset(i, next_reset_seeds_[static_cast<std::size_t>(i)]);
+      next_reset_seeds_[static_cast<std::size_t>(i)].reset();
       observe_into(batch_, i, result_.observations);
     } else {
       result_.observations.row(i) = result_.final_observations.row(i);

@@ -31,6 +31,7 @@ class LearnedReachVecEnv : public VecEnv {
   const Space& action_space() const override { return action_space_; }
   const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) override;
   const VecStep& step(const BatchMatrix& actions) override;
+  void seed_next_reset(int env, uint64_t seed) override;
 
   bool supports_snapshots() const override { return true; }
   void save_state(SnapshotWriter& out, bool environments) const override;
@@ -50,6 +51,7 @@ class LearnedReachVecEnv : public VecEnv {
   std::vector<Episode> episodes_;
   VecStep result_;
   bool ready_ = false;
+  std::vector<std::optional<uint64_t>> next_reset_seeds_;
 };
 
 }  // namespace tendril::envs::sma_limb

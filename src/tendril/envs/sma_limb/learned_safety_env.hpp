@@ -28,7 +28,7 @@ namespace tendril::envs::sma_limb {
 // bend leaves the disc (terminate_on_unsafe), when a velocity exceeds ±velocity_limit (the
 // model's range, the author's code) or on a non-finite prediction; truncated at T steps.
 //
-// Parameters: model (a model file or a `tendril dynamics fit` run; default LinearLimbModel, a
+// Parameters: model (a model file or a `tendril model fit` run; default LinearLimbModel, a
 // torch-free stand-in for tests), seed, safe_radius (30°), start_velocity (30 °/s),
 // velocity_limit (100 °/s), horizon (T, 500 steps as the author's code), terminate_on_unsafe
 // (true).

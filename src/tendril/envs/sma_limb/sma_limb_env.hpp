@@ -31,7 +31,7 @@ namespace tendril::envs::sma_limb {
 //
 // Parameters (`env.params`): limb (stiff | soft; default stiff), seed (default 0; the first
 // reset without a seed uses it), tip_mass (kg, default 0; the thesis tried 0.010 and 0.050),
-// calibration (a file written by `tendril collect`; default: the thesis' bounds for the limb, no
+// calibration (a file written by `tendril data calibrate`; default: the thesis' bounds for the limb, no
 // zero offsets).
 class SmaLimbEnv : public Env {
  public:

@@ -53,6 +53,7 @@ ThreadedVecEnv::ThreadedVecEnv(std::vector<std::unique_ptr<Env>> envs, int num_t
   const int observation_size = observation_space().size();
   actions_.assign(n, Action::Zero(action_space().size()));
   errors_.assign(n, nullptr);
+  next_reset_seeds_.assign(n, std::nullopt);
   result_.observations = BatchMatrix::Zero(n, observation_size);
   result_.final_observations = BatchMatrix::Zero(n, observation_size);
   result_.rewards = Eigen::VectorXf::Zero(n);
@@ -86,6 +87,7 @@ void ThreadedVecEnv::for_each_env(const std::function<void(int)>& task) {
 }
 
 const BatchMatrix& ThreadedVecEnv::reset(std::optional<uint64_t> seed) {
+  std::fill(next_reset_seeds_.begin(), next_reset_seeds_.end(), std::nullopt);
   const int observation_size = observation_space().size();
   for_each_env([&](int i) {
     const std::optional<uint64_t> env_seed =
@@ -101,6 +103,11 @@ const BatchMatrix& ThreadedVecEnv::reset(std::optional<uint64_t> seed) {
   return result_.observations;
 }
 
+void ThreadedVecEnv::seed_next_reset(int env, uint64_t seed) {
+  require(env >= 0 && env < num_envs(), "no environment " + std::to_string(env), kWhere);
+  next_reset_seeds_[env] = seed;
+}
+
 void ThreadedVecEnv::step_one(int i) {
   Step step = envs_[i]->step(actions_[i]);
   if (step.observation.size() != result_.observations.cols()) {
@@ -114,9 +121,10 @@ void ThreadedVecEnv::step_one(int i) {
   result_.terminated[i] = step.terminated ? 1 : 0;
   result_.truncated[i] = step.truncated ? 1 : 0;
   if (step.terminated || step.truncated) {
-    // Auto-reset without a seed: the env continues its own random stream, so the whole run
-    // stays determined by the seed given to reset().
-    result_.observations.row(i) = envs_[i]->reset().transpose();
+    // Auto-reset without a seed (unless seed_next_reset gave one): the env continues its own
+    // random stream, so the whole run stays determined by the seed given to reset().
+    result_.observations.row(i) = envs_[i]->reset(next_reset_seeds_[i]).transpose();
+    next_reset_seeds_[i].reset();
   } else {
     result_.observations.row(i) = step.observation.transpose();
   }

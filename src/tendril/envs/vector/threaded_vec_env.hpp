@@ -32,6 +32,7 @@ class ThreadedVecEnv : public VecEnv {
 
   const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) override;
   const VecStep& step(const BatchMatrix& actions) override;
+  void seed_next_reset(int env, uint64_t seed) override;
 
   bool supports_snapshots() const override;
   void save_state(SnapshotWriter& out, bool environments) const override;
@@ -45,6 +46,7 @@ class ThreadedVecEnv : public VecEnv {
   std::unique_ptr<ThreadPool> pool_;
   std::vector<Action> actions_;  // per-env action buffers, reused across steps
   std::vector<std::exception_ptr> errors_;
+  std::vector<std::optional<uint64_t>> next_reset_seeds_;  // seed_next_reset's, per env
   VecStep result_;
   bool ready_ = false;  // reset since construction or the last error
 };

@@ -34,6 +34,10 @@ class VecEnv {
   // rethrown (the lowest env index's if several fail); the VecEnv must then be reset. The
   // reference stays valid until the next reset or step.
   virtual const VecStep& step(const BatchMatrix& actions) = 0;
+  // The next automatic reset of env `env` (after its current episode ends) uses `seed`, once;
+  // later ones continue its own stream again. What the policy runner needs for "episode k
+  // resets with seed + k" over several environments. Raises Error where unsupported.
+  virtual void seed_next_reset(int env, uint64_t seed);
 
   // Whether every environment can be snapshotted (Env::supports_snapshots).
   virtual bool supports_snapshots() const = 0;
@@ -60,6 +64,7 @@ class VecEnvWrapper : public VecEnv {
     return inner_->reset(seed);
   }
   const VecStep& step(const BatchMatrix& actions) override { return inner_->step(actions); }
+  void seed_next_reset(int env, uint64_t seed) override { inner_->seed_next_reset(env, seed); }
   bool supports_snapshots() const override { return inner_->supports_snapshots(); }
   void save_state(SnapshotWriter& out, bool environments) const override {
     inner_->save_state(out, environments);

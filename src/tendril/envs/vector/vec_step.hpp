@@ -4,13 +4,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "tendril/core/batch_matrix.hpp"
 #include "tendril/core/env.hpp"
 
 namespace tendril::envs {
 
-// Row-major, one row per environment: the whole batch is one contiguous float buffer that maps
-// onto a (num_envs × size) tensor or NumPy array without a copy.
-using BatchMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using tendril::BatchMatrix;
 
 // The result of stepping every environment of a VecEnv once. With a VecNormalize attached,
 // observations, final observations and rewards are the normalized ones, while the infos'

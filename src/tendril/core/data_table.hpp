@@ -6,13 +6,20 @@
 #include <utility>
 #include <vector>
 
+// The one format of tendril's data files: every robot's data set (the SMA limb's in data/, the
+// pneumatic arm's in envs/pneumatic/) and the prepared sets the learned models fit. It sits in
+// core, below every layer that reads or writes such a file.
 namespace tendril::data {
 
 // One column of a data file: its name, how it is written, and one line of documentation that
 // the file's header carries.
 struct ColumnSpec {
+  // `decimals` of a column written as the shortest text that reads back as exactly its value
+  // (std::to_chars): measurements kept at their own resolution.
+  static constexpr int kShortest = -1;
+
   std::string name;
-  int decimals = 0;                // digits after the point; 0: an integer column
+  int decimals = 0;                // digits after the point; 0: an integer column; or kShortest
   std::vector<std::string> words;  // non-empty: a text column holding one of these words
   std::string description;         // units and meaning
 
@@ -52,8 +59,8 @@ struct Table {
 //   # crc32c: <8 hex digits>                (CRC-32C of every byte of the file but this line)
 //   <name>,<name>,...                       (the column header)
 //   <value>,<value>,...                     (one line per row, every line ending in '\n')
-// Numbers are written with the column's decimals (integers without a point), text columns as
-// their word.
+// Numbers are written with the column's decimals (integers without a point; kShortest columns
+// as the shortest exact text), text columns as their word.
 //
 // read_table is strict: the format line, the header and every field must be exactly as the
 // schema says, numbers finite and wholly parsed, integer columns integral, words known, and the
@@ -64,13 +71,21 @@ struct Table {
 // writes atomically (core/atomic_file.hpp); a value that the schema cannot represent (NaN, a
 // non-integral integer, an unknown word) is an Error naming the row and column.
 Table read_table(const std::filesystem::path& file, const TableSchema& schema);
+// The format a data file names on its first line ("# format: <format>"), or "" when its first
+// line is no format line; for readers that take one of several schemas. Error when the file
+// cannot be opened.
+std::string read_table_format(const std::filesystem::path& file);
 void write_table(const std::filesystem::path& file, const Table& table, const TableSchema& schema);
 // The text write_table writes.
 std::string format_table(const Table& table, const TableSchema& schema);
 // A data file's text: `comments` ('#' lines), the checksum line over both, then `body`.
 std::string checksummed(const std::string& comments, const std::string& body);
-// Raises Error naming `file` if `text` (a whole data file) carries a checksum line that does
-// not match it; for readers of these files outside read_table.
+// Raises Error naming `file` and the line if `text` (a whole data file) carries a checksum line
+// that does not match it (saying so when only its line ends were changed to CRLF); for readers of
+// these files outside read_table.
 void verify_checksum(const std::string& text, const std::filesystem::path& file);
+// Raises Error naming `file` if `text` ends its lines in a carriage return alone (it would read
+// as one line).
+void reject_carriage_returns_only(const std::string& text, const std::filesystem::path& file);
 
 }  // namespace tendril::data

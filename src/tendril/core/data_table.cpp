@@ -1,5 +1,6 @@
-#include "tendril/data/table.hpp"
+#include "tendril/core/data_table.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -65,7 +66,7 @@ double parse_field(std::string_view field, const ColumnSpec& column, const std::
   if (!std::isfinite(value)) {
     throw Error("column " + column.name + ": '" + std::string(field) + "' is not finite", where);
   }
-  if (column.decimals == 0 && value != std::floor(value)) {
+  if (column.decimals == 0 && value != std::floor(value)) {  // kShortest takes any number
     throw Error("column " + column.name + ": '" + std::string(field) + "' is not an integer",
                 where);
   }
@@ -112,6 +113,13 @@ Table read_table(const std::filesystem::path& file, const TableSchema& schema) {
   buffer << in.rdbuf();
   const std::string text = buffer.str();
   if (text.empty()) throw Error("empty data file", location(file, 1));
+  reject_carriage_returns_only(text, file);
+  // Before the checksum, which would call the cut damage.
+  if (text.back() != '\n') {
+    throw Error(
+        "truncated: the last line has no line end (file cut short?)",
+        location(file, 1 + static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'))));
+  }
   verify_checksum(text, file);
 
   Table table;
@@ -210,6 +218,9 @@ std::string format_table(const Table& table, const TableSchema& schema) {
           throw Error("column " + column.name + " holds no word index", where);
         }
         text += column.words[static_cast<std::size_t>(value)];
+      } else if (column.decimals == ColumnSpec::kShortest) {
+        const auto end = std::to_chars(field, field + sizeof field, value).ptr;
+        text.append(field, end);
       } else if (column.decimals == 0) {
         if (value != std::floor(value)) {
           throw Error("column " + column.name + " is not an integer", where);
@@ -236,6 +247,25 @@ std::string checksummed(const std::string& comments, const std::string& body) {
          checksum_text(crc32c(whole.data(), whole.size())) + "\n" + body;
 }
 
+std::string read_table_format(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error("cannot open data file", file.string());
+  std::string line;
+  std::getline(in, line);
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const std::string prefix = "# format: ";
+  return line.rfind(prefix, 0) == 0 ? line.substr(prefix.size()) : std::string();
+}
+
+void reject_carriage_returns_only(const std::string& text, const std::filesystem::path& file) {
+  if (text.find('\n') == std::string::npos && text.find('\r') != std::string::npos) {
+    throw Error(
+        "its lines end in a carriage return alone (classic Mac line ends): convert them "
+        "to '\\n' line ends",
+        location(file, 1));
+  }
+}
+
 void verify_checksum(const std::string& text, const std::filesystem::path& file) {
   // Only header lines start with '#', so the first line of this form is the checksum line.
   const std::string prefix = "# " + std::string(kChecksumKey) + ": ";
@@ -248,14 +278,25 @@ void verify_checksum(const std::string& text, const std::filesystem::path& file)
   const std::size_t end = text.find('\n', begin);
   if (end == std::string::npos) throw Error("truncated in its checksum line", file.string());
   const std::size_t value = begin + prefix.size();
-  const std::string stored = text.substr(value, end - value);
+  std::string stored = text.substr(value, end - value);
+  const std::string where = location(
+      file, 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + begin, '\n')));
+  if (!stored.empty() && stored.back() == '\r') {
+    // The file was written with '\n' line ends; '\r\n' ones are a change (an editor, a
+    // transfer in text mode), which the checksum cannot tell from damage.
+    throw Error(
+        "its line ends were changed to CRLF ('\\r\\n') after it was written, so its "
+        "checksum no longer holds: convert them back to '\\n', or delete the checksum "
+        "line to read it as it is",
+        where);
+  }
   const std::string rest = text.substr(0, begin) + text.substr(end + 1);
   const std::string computed = checksum_text(crc32c(rest.data(), rest.size()));
   if (stored != computed) {
-    throw Error("corrupt: its CRC-32C is " + computed + ", its checksum line says " + stored +
-                    " (changed or damaged after it was written; delete that line to read a "
+    throw Error("corrupt: its CRC-32C is " + computed + ", its checksum line says '" + stored +
+                    "' (changed or damaged after it was written; delete that line to read a "
                     "deliberately edited file)",
-                file.string());
+                where);
   }
 }
 

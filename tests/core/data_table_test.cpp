@@ -1,5 +1,5 @@
 // Data files: exact round trips, and strict reading that names the file and line of any fault.
-#include "tendril/data/table.hpp"
+#include "tendril/core/data_table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -89,9 +89,68 @@ TEST_F(TableFile, AFileChangedAfterItWasWrittenIsRefusedAndOneWithoutAChecksumIs
   text[digit] = '2';  // still a valid table: only the checksum can tell
   const auto changed = write("changed.csv", text);
   const std::string message = error_message([&] { read_table(changed, schema()); });
-  EXPECT_NE(message.find(changed.string() + ": corrupt: its CRC-32C is"), std::string::npos)
+  EXPECT_NE(message.find(changed.string() + ":6: corrupt: its CRC-32C is"), std::string::npos)
       << message;
   EXPECT_EQ(read_table(write("unchecked.csv", kGood), schema()).rows(), 2);
+}
+
+// Line ends changed after writing: each gets a message that says so, at the file and line.
+TEST_F(TableFile, ChangedLineEndsAreNamedNotReportedAsDamage) {
+  Table table;
+  table.values.resize(1, 4);
+  table.values << 0.5, 1.25, 7, 1;
+  const auto file = directory_ / "written.csv";
+  write_table(file, table, schema());
+  const std::string text = read(file);
+  std::string crlf, cr;
+  for (char c : text) {
+    crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    cr += c == '\n' ? '\r' : c;
+  }
+  const auto windows = write("windows.csv", crlf);
+  std::string message = error_message([&] { read_table(windows, schema()); });
+  EXPECT_NE(message.find(windows.string() + ":6: its line ends were changed to CRLF"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(message.find('\r'), std::string::npos) << "no invisible characters in the message";
+  const auto mac = write("mac.csv", cr);
+  message = error_message([&] { read_table(mac, schema()); });
+  EXPECT_NE(message.find(mac.string() + ":1: its lines end in a carriage return alone"),
+            std::string::npos)
+      << message;
+  // Without a checksum line, CRLF line ends are read as they are.
+  EXPECT_EQ(read_table(write("crlf.csv",
+                             [&] {
+                               std::string out;
+                               for (char c : std::string(kGood)) {
+                                 out += c == '\n' ? std::string("\r\n") : std::string(1, c);
+                               }
+                               return out;
+                             }()),
+                       schema())
+                .rows(),
+            2);
+}
+
+// kShortest columns keep any double exactly, as the shortest text that reads back as it.
+TEST_F(TableFile, ShortestColumnsRoundTripEveryDoubleExactly) {
+  const TableSchema exact{"test.exact v1",
+                          {{"t", ColumnSpec::kShortest, {}, "time, s"},
+                           {"x", ColumnSpec::kShortest, {}, "a measurement"}}};
+  Table table;
+  table.values.resize(4, 2);
+  table.values << 0.1 * 3, 1e-300, 0.7, -598.5, 123456.789012345678, 5e300, 3, -0.0;
+  const auto file = directory_ / "exact.csv";
+  write_table(file, table, exact);
+  const std::string text = read(file);
+  EXPECT_NE(text.find("\n0.30000000000000004,1e-300\n0.7,-598.5\n"), std::string::npos) << text;
+  const Table back = read_table(file, exact);
+  ASSERT_EQ(back.rows(), 4);
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 2; ++c) EXPECT_EQ(back.values(r, c), table.values(r, c)) << r << c;
+  }
+  EXPECT_EQ(read_table_format(file), "test.exact v1");
+  EXPECT_EQ(read_table_format(write("plain.csv", "t,x\n1,2\n")), "");
 }
 
 TEST_F(TableFile, NeverOverwritesAndRefusesValuesItCannotWrite) {

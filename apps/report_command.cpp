@@ -1,4 +1,4 @@
-// `tendril summarize`: the numbers of runs outside a sweep — training means at given steps,
+// `tendril report`: the numbers of runs outside a sweep — training means at given steps,
 // final evaluations, training time — per run and as mean ± std over seeds.
 #include <algorithm>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/rl/runs_report.hpp"
@@ -35,8 +35,7 @@ std::vector<double> steps_of(const std::string& text) {
 
 }  // namespace
 
-int summarize_command(const std::vector<std::string>& args) {
-  const CommandLine line = CommandLine::parse(args, {"at"}, {});
+int report_command(const Arguments& line) {
   require(!line.positional.empty(), "expects run directories or directories of runs",
           "command line");
   require(line.overrides.empty(), "takes no --set", "command line");
