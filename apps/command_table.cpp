@@ -424,15 +424,44 @@ std::vector<CommandSpec> command_table() {
       .run = serve_command,
   });
 #endif
+#ifdef TENDRIL_WITH_RL
+  table.push_back({
+      .words = {"export"},
+      .positionals = "RUN|POLICY.policy",
+      .min_positionals = 1,
+      .max_positionals = 1,
+      .summary = "A trained policy for other runtimes: a dependency-free C header, an ONNX model.",
+      .description =
+          "Both compute the policy's deterministic action from a raw observation: its "
+          "observation normalization, its layers, then the action's squash and scaling into the "
+          "action space (or the argmax of a discrete policy), as `tendril run` computes it. The C "
+          "header is C89 with <math.h> only: float weights (in flash under avr-gcc) and "
+          "NAME_act(observation, action); it compiles for the SMA limb's ATmega328P. The ONNX "
+          "model (opset 13, checked with onnx.checker) is written by the Python package "
+          "(python3-onnx). Policies of PPO, TRPO, SAC, TD3, DDPG and DQN with MLP networks; "
+          "existing files are never replaced (docs/export.md).",
+      .options = {{"c", "FILE.h", "Write the policy as a C header."},
+                  {"name", "NAME", "The C header's identifier prefix (default policy)."},
+                  {"onnx", "FILE.onnx", "Write the policy as an ONNX model."},
+                  {"best", "", "The run's best_model.policy (eval.save_best)."}},
+      .examples = {"tendril export runs/limb --c limb_policy.h --name limb",
+                   "tendril export runs/arm --onnx arm.onnx"},
+      .run = export_command,
+  });
+#endif
   table.push_back({
       .words = {"plot"},
       .positionals = "curves|episode|csv|map ...",
       .min_positionals = 0,
       .max_positionals = -1,
       .summary = "Figures (PNG, SVG, PDF) of runs, sweeps, CSV files and recorded episodes "
-                 "(matplotlib).",
-      .description = "`tendril plot <kind> --help` lists each kind's options (docs/plotting.md).",
-      .examples = {"tendril plot curves runs/sweeps/my_sweep --out curves.png"},
+                 "(matplotlib); videos of recorded episodes.",
+      .description = "`tendril plot <kind> --help` lists each kind's options (docs/plotting.md). "
+                     "`plot episode EPISODE --video --out FILE.mp4` (or .webm, .gif) writes a "
+                     "video of a recorded episode instead, drawn by tendril's software "
+                     "rasterizer and encoded by ffmpeg.",
+      .examples = {"tendril plot curves runs/sweeps/my_sweep --out curves.png",
+                   "tendril plot episode runs/arm/episodes/episode_0000.tep --video --out arm.mp4"},
       .passthrough = true,
       .run = plot_command,
   });

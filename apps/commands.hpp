@@ -31,6 +31,7 @@ int track_command(const Arguments& line);
 int simulate_command(const Arguments& line);
 int serve_command(const Arguments& line);
 int plot_command(const Arguments& line);
+int export_command(const Arguments& line);
 int list_envs_command(const Arguments& line);
 int list_algorithms_command(const Arguments& line);
 int list_wrappers_command(const Arguments& line);

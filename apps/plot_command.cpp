@@ -17,8 +17,12 @@ int plot_command(const Arguments& line) {
   // Debian's interpreter, which has python3-matplotlib (another python3 may come first on PATH).
   const char* python_override = std::getenv("TENDRIL_PYTHON");
   const std::string python = python_override != nullptr ? python_override : "/usr/bin/python3";
+  // The plotting package's sources, after the build's tendril package (whose extension draws
+  // the frames of `plot episode --video`).
   const char* package_override = std::getenv("TENDRIL_PLOT_PATH");
-  std::string path = package_override != nullptr ? package_override : TENDRIL_PYTHON_DIR;
+  std::string path = package_override != nullptr
+                         ? package_override
+                         : std::string(TENDRIL_PYTHON_BUILD_DIR) + ":" + TENDRIL_PYTHON_DIR;
   if (const char* existing = std::getenv("PYTHONPATH"); existing != nullptr && *existing != 0) {
     path += std::string(":") + existing;
   }

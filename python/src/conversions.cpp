@@ -104,6 +104,13 @@ py::dict info_to_dict(const Info& info) {
   return out;
 }
 
+py::array_t<uint8_t> image_to_numpy(const render::Image& image) {
+  py::array_t<uint8_t> out({static_cast<py::ssize_t>(image.height),
+                            static_cast<py::ssize_t>(image.width), py::ssize_t{3}});
+  std::copy(image.rgb.begin(), image.rgb.end(), out.mutable_data());
+  return out;
+}
+
 py::dict scene_to_dict(const Scene& scene) {
   py::dict out;
   out["time"] = scene.time;

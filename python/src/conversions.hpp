@@ -12,6 +12,7 @@
 #include "tendril/core/env.hpp"
 #include "tendril/core/scene.hpp"
 #include "tendril/envs/vector/vec_step.hpp"
+#include "tendril/render/image.hpp"
 
 namespace tendril::python {
 
@@ -44,6 +45,9 @@ Action action_from_python(const Space& space, const py::handle& value, std::stri
 // and the shape found unless it is (num_envs, size), or (num_envs,) for Discrete or size 1.
 void batch_from_python(const Space& space, int num_envs, const py::handle& value,
                        std::string_view who, envs::BatchMatrix& out);
+
+// A height × width × 3 uint8 array holding a copy of the image.
+py::array_t<uint8_t> image_to_numpy(const render::Image& image);
 
 // A NumPy view of `data` owned by `owner` (kept alive by the array), read-only.
 py::array readonly_view(const float* data, std::vector<py::ssize_t> shape, py::handle owner);

@@ -10,6 +10,7 @@
 #include "object_lock.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/render/scene_rasterizer.hpp"
 
 namespace tendril::python {
 
@@ -31,6 +32,9 @@ class PyEnv {
       observation = env_->reset(seed);
     }
     reset_ = true;
+    view_.reset();  // each episode is framed anew
+    Scene scene;
+    if (!step_seconds_ && env_->describe_scene(scene)) reset_time_ = scene.time;
     return to_numpy(observation);
   }
 
@@ -43,6 +47,13 @@ class PyEnv {
       py::gil_scoped_release release;
       step = env_->step(action);
     }
+    if (!step_seconds_ && reset_time_) {  // the scene's clock after one step: its time step
+      Scene scene;
+      if (env_->describe_scene(scene) && scene.time > *reset_time_) {
+        step_seconds_ = scene.time - *reset_time_;
+      }
+      reset_time_.reset();
+    }
     return py::make_tuple(to_numpy(step.observation), step.reward, step.terminated, step.truncated,
                           info_to_dict(step.info));
   }
@@ -52,6 +63,37 @@ class PyEnv {
     Scene scene;
     if (!env_->describe_scene(scene)) return py::none();
     return scene_to_dict(scene);
+  }
+
+  bool has_scene() {
+    const auto lock = lock_.acquire();
+    Scene scene;
+    return env_->describe_scene(scene);
+  }
+
+  // The scene now as a height × width × 3 image (render::SceneRasterizer), seen from one view
+  // per episode (framed at the first picture after reset); None without a scene.
+  py::object render(int width, int height, int supersample) {
+    const auto lock = lock_.acquire();
+    Scene scene;
+    if (!env_->describe_scene(scene)) return py::none();
+    const render::RasterOptions options{width, height, supersample};
+    if (!rasterizer_ || rasterizer_->options().width != width ||
+        rasterizer_->options().height != height ||
+        rasterizer_->options().supersample != supersample) {
+      rasterizer_.emplace(options);
+    }
+    if (!view_) view_ = render::frame_scenes({&scene});
+    {
+      py::gil_scoped_release release;
+      rasterizer_->draw(scene, *view_, image_);
+    }
+    return image_to_numpy(image_);
+  }
+
+  std::optional<double> step_seconds() {
+    const auto lock = lock_.acquire();
+    return step_seconds_;
   }
 
   // The snapshot with a checksum: a changed or damaged copy is refused, not loaded.
@@ -93,6 +135,10 @@ class PyEnv {
   std::unique_ptr<Env> env_;
   std::string who_;
   bool reset_ = false;
+  std::optional<render::SceneRasterizer> rasterizer_;
+  std::optional<render::View> view_;
+  render::Image image_;
+  std::optional<double> reset_time_, step_seconds_;
   ObjectLock lock_;  // one call at a time from Python threads (object_lock.hpp)
 };
 
@@ -120,6 +166,11 @@ void bind_env(py::module_& m) {
       .def("reset", &PyEnv::reset, py::arg("seed") = py::none())
       .def("step", &PyEnv::step, py::arg("action"))
       .def("scene", &PyEnv::scene)
+      .def_property_readonly("has_scene", &PyEnv::has_scene)
+      .def("render", &PyEnv::render, py::arg("width") = 640, py::arg("height") = 480,
+           py::arg("supersample") = 2)
+      .def_property_readonly("step_seconds", &PyEnv::step_seconds,
+                             "Seconds of the scene's clock per step (None until known).")
       .def_property_readonly("supports_snapshots",
                              [](PyEnv& self) { return self.env().supports_snapshots(); })
       .def("save_state", &PyEnv::save_state)

@@ -14,6 +14,16 @@ def size(text):
     return (width, height)
 
 
+def resolution(text):
+    try:
+        width, height = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError("expected WIDTHxHEIGHT in pixels, e.g. 960x540")
+    if width <= 0 or height <= 0 or width % 2 or height % 2:
+        raise argparse.ArgumentTypeError("a video's width and height must be positive and even")
+    return (width, height)
+
+
 def numbers_with_label(text, count, form):
     values, _, label = text.partition(":")
     try:
@@ -76,6 +86,15 @@ def main(argv):
     e.add_argument("--up", choices=["auto", "x", "y", "z"], default="auto",
                    help="the lab axis drawn upwards (auto: the first rod's direction)")
     e.add_argument("--colormap", default="Oranges")
+    e.add_argument("--video", action="store_true",
+                   help="write a video of the episode instead (--out FILE.mp4, .webm or .gif): "
+                        "the scene in 3D from one view, the tip's and targets' paths growing")
+    e.add_argument("--speed", type=float, default=0.0,
+                   help="video: episode seconds per second of video (default 0: every step a "
+                        "frame, at the recording's rate up to 30 per second)")
+    e.add_argument("--fps", type=float, default=0.0, help="video: frames per second")
+    e.add_argument("--resolution", type=resolution, default=(960, 540),
+                   help="video: WIDTHxHEIGHT in pixels, both even (default 960x540)")
     common(e, (10.0, 5.6))
 
     v = kinds.add_parser("csv", help="columns of CSV files",
@@ -142,6 +161,15 @@ def main(argv):
     common(m, (6.4, 5.0))
 
     args = parser.parse_args(argv)
+    if args.figure == "episode" and args.video:
+        from .video import episode_video  # tendril's extension draws the frames, not matplotlib
+
+        try:
+            episode_video(args)
+        except EpisodeError as error:
+            print(f"tendril plot: error: {error}", file=sys.stderr)
+            return 1
+        return 0
     from . import figures, maps, tables  # matplotlib loads only when a figure is drawn
 
     try:

@@ -57,6 +57,28 @@ TEST_F(RunIndexTest, FindsRunsAndTheSweepsThatHoldThem) {
             (std::vector<std::string>{"results/ppo_seed0", "results/ppo_seed1"}));
 }
 
+// Runs side by side in the served directory itself are the list, not a sweep; a sweep's summary
+// and its figures are found.
+TEST_F(RunIndexTest, TheRootIsNoSweepAndSummariesAreFound) {
+  make_run(directory_ / "a_seed0", "algorithm: ppo\n");
+  make_run(directory_ / "a_seed1", "algorithm: ppo\n");
+  make_run(directory_ / "sweep" / "only_seed0", "algorithm: ppo\n");
+  fs::create_directories(directory_ / "sweep" / "summary" / "curves");
+  std::ofstream(directory_ / "sweep" / "summary" / "summary.md") << "# Sweep\n";
+  std::ofstream(directory_ / "sweep" / "summary" / "training.png") << "png";
+  std::ofstream(directory_ / "sweep" / "summary" / "eval.svg") << "svg";
+  std::ofstream(directory_ / "sweep" / "summary" / "runs.csv") << "run\n";
+  const RunIndex index = index_runs(ServedRoot(directory_));
+  EXPECT_EQ(index.runs.size(), 3u);
+  ASSERT_EQ(index.sweeps.size(), 1u);  // one run and a summary: a sweep; the root: none
+  EXPECT_EQ(index.sweeps[0].path, "sweep");
+  EXPECT_EQ(index.sweeps[0].summary, "sweep/summary/summary.md");
+  EXPECT_EQ(index.sweeps[0].figures,
+            (std::vector<std::string>{"sweep/summary/eval.svg", "sweep/summary/training.png"}));
+  EXPECT_EQ(index.runs[0].state.kind, "training");
+  EXPECT_EQ(index.runs[0].state.status, "stopped");
+}
+
 TEST_F(RunIndexTest, TheRootItselfCanBeARun) {
   make_run(directory_, "algorithm: sac\n");
   const RunIndex index = index_runs(ServedRoot(directory_));

@@ -6,14 +6,19 @@
 //   python_reference act <policy file> <observations file> <deterministic 0|1> <seed> <out file>
 //     rl::load_policy(file).act on each row (raw float32 observations), one Rng(seed) for all;
 //     writes the actions (raw float32).
+//   python_reference sample-policies <directory>
+//     writes one policy file of every exportable kind and shape, <name>.policy
+//     (tests/rl/export/sample_policies.hpp), for the export tests.
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 #include <string>
 #include <vector>
 
+#include "rl/export/sample_policies.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/policy.hpp"
@@ -74,6 +79,13 @@ int act(const std::string& policy_file, const std::string& observations_file, bo
   return 0;
 }
 
+int sample_policies(const std::string& directory) {
+  for (const auto& [name, policy] : tendril::testing::sample_policies()) {
+    policy->save(std::filesystem::path(directory) / (name + ".policy"));
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,11 +97,13 @@ int main(int argc, char** argv) {
     if (args.size() == 6 && args[0] == "act") {
       return act(args[1], args[2], args[3] == "1", std::stoull(args[4]), args[5]);
     }
+    if (args.size() == 2 && args[0] == "sample-policies") return sample_policies(args[1]);
   } catch (const std::exception& error) {
     std::cerr << "python_reference: " << error.what() << "\n";
     return 1;
   }
   std::cerr << "usage: python_reference episode <id> <seed> <actions> <out>\n"
-               "       python_reference act <policy> <observations> <0|1> <seed> <out>\n";
+               "       python_reference act <policy> <observations> <0|1> <seed> <out>\n"
+               "       python_reference sample-policies <directory>\n";
   return 2;
 }

@@ -15,8 +15,10 @@
 #include "support/evaluation.hpp"
 #include "tendril/core/episode_reader.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/scalar_log.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/policy.hpp"
+#include "tendril/rl/training_observers.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
 
 namespace tendril::rl {
@@ -99,6 +101,71 @@ TEST(Trainer, WritesTheRunDirectory) {
     has_events |= entry.path().filename().string().rfind("events.out.tfevents.", 0) == 0;
   }
   EXPECT_TRUE(has_events);
+}
+
+// Evaluations reach TensorBoard under SB3's EvalCallback names, at the step they were made:
+// eval/mean_reward as eval.csv's mean (to float precision, TensorBoard's simple_value), and
+// eval/mean_ep_length; Pendulum reports no success, so no eval/success_rate.
+TEST(Trainer, LogsEvaluationsToTheEventFileUnderSb3Names) {
+  const fs::path run = fresh("eval_events");
+  train(experiment(), run, {.stop_at = std::nullopt, .quiet = true});
+  std::map<std::string, std::map<int64_t, float>> events;
+  for (const auto& entry : fs::directory_iterator(run)) {
+    if (entry.path().filename().string().rfind("events.out.tfevents.", 0) != 0) continue;
+    for (const EventScalar& s : read_event_scalars(entry.path())) events[s.tag][s.step] = s.value;
+  }
+  std::ifstream in(run / "eval.csv");
+  std::string line;
+  std::getline(in, line);
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::stringstream cells(line);
+    std::string timesteps, mean;
+    std::getline(cells, timesteps, ',');
+    std::getline(cells, mean, ',');
+    const int64_t step = std::stoll(timesteps);
+    ASSERT_TRUE(events["eval/mean_reward"].count(step)) << "no eval/mean_reward at " << step;
+    EXPECT_EQ(events["eval/mean_reward"][step], static_cast<float>(std::stod(mean)));
+    EXPECT_EQ(events["eval/mean_ep_length"][step], 200.0f);  // Pendulum's time limit
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2);  // at 1024 steps and at the end
+  EXPECT_EQ(events["eval/mean_reward"].size(), 2u);
+  EXPECT_EQ(events.count("eval/success_rate"), 0u);
+}
+
+// An evaluation of an env that reports success adds eval/success_rate (the fraction of
+// episodes whose last info says is_success).
+TEST(Trainer, EvaluationEventsCarryTheSuccessRate) {
+  const fs::path run = fresh("eval_success");
+  fs::create_directories(run);
+  {
+    ScalarLogObserver log(run, false, 0);
+    envs::RunResult evaluation;
+    const double returns[] = {1.0, 2.0, 6.0, 3.0};
+    for (int i = 0; i < 4; ++i) {
+      envs::EpisodeOutcome episode;
+      episode.index = i;
+      episode.episode_return = returns[i];
+      episode.length = 10 * (i + 1);
+      episode.final_info.set("is_success", i == 2 ? 0.0 : 1.0);
+      evaluation.episodes.push_back(episode);
+    }
+    log.log_evaluation(5000, evaluation);
+  }
+  std::map<std::string, float> at_5000;
+  for (const auto& entry : fs::directory_iterator(run)) {
+    if (entry.path().filename().string().rfind("events.out.tfevents.", 0) != 0) continue;
+    for (const EventScalar& s : read_event_scalars(entry.path())) {
+      if (s.step == 5000) at_5000[s.tag] = s.value;
+    }
+  }
+  EXPECT_EQ(at_5000["eval/mean_reward"], 3.0f);
+  EXPECT_EQ(at_5000["eval/mean_ep_length"], 25.0f);
+  EXPECT_EQ(at_5000["eval/success_rate"], 0.75f);
+  EXPECT_EQ(at_5000.size(), 3u);
+  EXPECT_FALSE(fs::exists(run / "progress.csv") &&
+               read_text(run / "progress.csv").find("eval/") != std::string::npos);
 }
 
 TEST(Trainer, ResumedRunEqualsTheUninterruptedRun) {

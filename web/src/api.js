@@ -14,7 +14,23 @@ async function getJson(url) {
 
 const q = encodeURIComponent;
 
+// A file under the served directory as text (GET /files/PATH).
+async function getText(path) {
+  const response = await fetch(`files/${path.split('/').map(encodeURIComponent).join('/')}`, { cache: 'no-store' });
+  if (!response.ok) {
+    let message = `${path}: ${response.status}`;
+    try {
+      message = (await response.json()).error || message;
+    } catch {
+      // not JSON: keep the status
+    }
+    throw new Error(message);
+  }
+  return response.text();
+}
+
 export const api = {
+  text: getText,
   index: () => getJson('api/index'),
   run: (path) => getJson(`api/run?path=${q(path)}`),
   csv: (path, offset = 0) => getJson(`api/csv?path=${q(path)}&offset=${offset}`),

@@ -26,6 +26,17 @@ export function episodeHash(path) {
   return `#/episode?path=${encodeURIComponent(path)}`;
 }
 
+export function summaryHash(path) {
+  return `#/summary?path=${encodeURIComponent(path)}`;
+}
+
+// 1st, 2nd, 3rd, 4th, …, 11th, 12th, 13th, 21st.
+export function ordinal(n) {
+  const tens = n % 100;
+  const suffix = tens >= 11 && tens <= 13 ? 'th' : { 1: 'st', 2: 'nd', 3: 'rd' }[n % 10] || 'th';
+  return `${n}${suffix}`;
+}
+
 export function compareHash(paths, options = {}) {
   const query = new URLSearchParams({ runs: paths.join('|') });
   if (options.group) query.set('group', '1');

@@ -1,12 +1,16 @@
 // The dashboard's page: a hash router over four views.
 import './style.css';
+import { api } from './api.js';
 import { setStatus } from './dom.js';
 import { showRuns } from './views/runs.js';
 import { showRun } from './views/run.js';
 import { showCompare } from './views/compare.js';
 import { showReplay } from './views/replay.js';
+import { showSummary } from './views/summary.js';
 
-const views = { '': showRuns, run: showRun, compare: showCompare, episode: showReplay };
+const views = {
+  '': showRuns, run: showRun, compare: showCompare, episode: showReplay, summary: showSummary,
+};
 let current = null;  // { dispose } of the view on screen
 
 async function route() {
@@ -25,6 +29,11 @@ async function route() {
     console.warn(error);
   }
 }
+
+// The served directory's name in the header, once.
+api.index().then((index) => {
+  document.getElementById('root-name').textContent = `${index.root}/`;
+}).catch(() => {});
 
 window.addEventListener('hashchange', route);
 route();

@@ -95,6 +95,15 @@ export function episodeBounds(episode) {
   return box;
 }
 
+// A round grid spacing near `length` / 8: 1, 2 or 5 times a power of ten (as tendril's own
+// pictures, render/camera.cpp).
+export function gridSpacing(length) {
+  const raw = Math.max(length, 1e-6) / 8;
+  const power = 10 ** Math.floor(Math.log10(raw));
+  for (const factor of [1, 2, 5]) if (factor * power >= raw) return factor * power;
+  return 10 * power;
+}
+
 // The lab axis to draw upwards: the one the first rod runs along from base to tip (PyElastica's
 // arms grow along y), else z.
 export function detectUp(episode) {
@@ -162,6 +171,7 @@ export class SceneView {
     };
     this.trails = this.buildTrails();
     this.grid = null;
+    this.axes = null;
     this.setUp(detectUp(episode));
     this.frameIndex = 0;
     this.show(0);
@@ -211,21 +221,31 @@ export class SceneView {
     return line;
   }
 
-  // Which lab axis points up on screen: 'z' (the Elastica arms grow along z) or 'y'.
+  // Which lab axis points up on screen: 'z' (the Elastica arms grow along z) or 'y'. The floor
+  // is a grid under everything drawn (at the lab's zero height or below), centred under the
+  // episode, its lines a round distance apart (about an eighth of the scene) and through the lab
+  // origin; an axis triad (x red, y green, z blue) two grid lines long marks the origin.
   setUp(axis) {
     this.up = axis;
     this.camera.up.copy(axis === 'z' ? unitZ : unitY);
     if (this.grid) this.scene.remove(this.grid);
-    const extent = Math.pow(10, Math.ceil(Math.log10(this.size)));
-    this.grid = new THREE.GridHelper(2 * extent, 20, 0xaab0b8, 0xd5d9de);
+    if (this.axes) this.scene.remove(this.axes);
+    const spacing = gridSpacing(this.size);
     const centre = this.bounds.getCenter(new THREE.Vector3());
+    const half = Math.ceil((0.6 * this.size) / spacing) * spacing;
+    const snap = (v) => Math.round(v / spacing) * spacing;
+    this.grid = new THREE.GridHelper(2 * half, Math.round((2 * half) / spacing), 0xaab0b8, 0xd5d9de);
     if (axis === 'z') {
       this.grid.rotation.x = Math.PI / 2;
-      this.grid.position.set(centre.x, centre.y, Math.min(this.bounds.min.z, 0));
+      this.grid.position.set(snap(centre.x), snap(centre.y), Math.min(this.bounds.min.z, 0));
     } else {
-      this.grid.position.set(centre.x, Math.min(this.bounds.min.y, 0), centre.z);
+      this.grid.position.set(snap(centre.x), Math.min(this.bounds.min.y, 0), snap(centre.z));
     }
     this.scene.add(this.grid);
+    this.axes = new THREE.AxesHelper(2 * spacing);
+    this.axes.material.depthTest = false;  // drawn over the floor it stands on
+    this.axes.renderOrder = 1;
+    this.scene.add(this.axes);
     this.resetCamera();
   }
 

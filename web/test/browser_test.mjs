@@ -4,6 +4,7 @@
 // screenshot per view.
 //   node browser_test.mjs --tendril build/apps/tendril --root RUNS --out SCREENSHOT_DIR
 //        [--run PATH] [--compare PATH,PATH,...] [--episode PATH] [--primitives PATH|none]
+//        [--external PATH] [--fit PATH]
 import { spawn } from 'node:child_process';
 import { mkdirSync, statSync } from 'node:fs';
 import { join } from 'node:path';
@@ -11,6 +12,8 @@ import { chromium } from 'playwright-core';
 
 const options = {
   run: 'sweep/ppo_seed0',
+  external: 'external/sb3_pendulum',
+  fit: 'fits/sma_stiff_lstm',
   compare: 'sweep/ppo_seed0,sweep/ppo_seed1,sweep/ppo_seed2',
   episode: 'sweep/ppo_seed0/episodes/episode_0000.tep',
   primitives: 'sweep/ppo_seed0/episodes/all_primitives.tep',
@@ -76,6 +79,16 @@ async function screenshot(page, name) {
   check(statSync(file).size > 15000, `${name}.png is a picture (${statSync(file).size} bytes)`);
 }
 
+// Every chart's y-axis labels (what the axis formatter returned for the drawn ticks): none may
+// repeat within a chart.
+async function ticksAreDistinct(page, view) {
+  const axes = await page.$$eval('.chart[data-y-ticks]', (boxes) => boxes.map((b) => JSON.parse(b.dataset.yTicks)));
+  const repeated = axes.filter((labels) => new Set(labels.filter((l) => l !== '')).size !== labels.filter((l) => l !== '').length);
+  check(axes.length > 0 && repeated.length === 0,
+    `${view}: y-axis labels differ in each of ${axes.length} charts${repeated.length ? ` (repeated: ${JSON.stringify(repeated[0])})` : ''}`);
+  return axes;
+}
+
 async function statusIsClean(page, view) {
   const status = await page.$eval('#status', (el) => ({ text: el.textContent, error: el.classList.contains('error') }));
   check(!status.error, `${view}: no error shown${status.error ? ` (${status.text})` : ''}`);
@@ -95,6 +108,9 @@ try {
   });
   page.on('pageerror', (error) => errors.push(error.message));
   page.on('requestfailed', (request) => errors.push(`request failed: ${request.url()}`));
+  page.on('response', (response) => {
+    if (response.status() >= 400) errors.push(`${response.status()} for ${response.url()}`);
+  });
   page.on('request', (request) => {
     if (!request.url().startsWith(url) && !request.url().startsWith('data:')) errors.push(`request outside the server: ${request.url()}`);
   });
@@ -103,10 +119,42 @@ try {
   await page.goto(url);
   await page.waitForSelector('table.runs tbody tr td a');
   const listed = await page.$$eval('table.runs tbody tr', (rows) => rows.length);
-  check(listed >= 3, `runs view lists the runs (${listed})`);
-  check((await page.$$('.sweep')).length >= 1, 'runs view lists the sweep');
+  check(listed >= 5, `runs view lists the runs (${listed})`);
+  const headers = await page.$$eval('table.runs thead th', (cells) => cells.map((c) => c.textContent));
+  for (const column of ['status', 'steps', 'return', 'evaluation']) {
+    check(headers.includes(column), `runs view has a ${column} column (${headers.join(', ')})`);
+  }
+  // The columns of each kind of run, by column name.
+  const row = (path) => page.$eval(`table.runs tbody tr[data-path="${path}"]`, (tr, names) => {
+    const cells = [...tr.children].map((c) => c.textContent.trim());
+    return Object.fromEntries(names.map((n, i) => [n, cells[i]]));
+  }, headers);
+  const trained = await row(options.run);
+  check(trained.status === 'finished', `a finished training run says so (${trained.status})`);
+  check(/^[\d.]+k? \/ [\d.]+k?$/.test(trained.steps), `its steps are shown against the budget (${trained.steps})`);
+  check(/^-?[\d.]+$/.test(trained.return) && /^-?[\d.]+$/.test(trained.evaluation),
+    `its last training return and evaluation are shown (${trained.return}, ${trained.evaluation})`);
+  const fitted = await row(options.fit);
+  check(fitted.status === 'finished' && fitted.algorithm === 'model fit' && /epochs$/.test(fitted.steps) && /^loss /.test(fitted.return),
+    `a model fit is listed as one (${JSON.stringify(fitted)})`);
+  const external = await row(options.external);
+  check(external.status === '–' && /^-11\d\d$/.test(external.return), `logs from elsewhere: no status, their last return to four digits (${external.status}, ${external.return})`);
+  check(!(await page.$$eval('.status', (badges) => badges.some((b) => b.textContent === 'live'))), 'nothing is called live');
+  const sweeps = await page.$$eval('.sweep', (rows) => rows.map((r) => r.dataset.path));
+  check(sweeps.length >= 1 && !sweeps.includes(''), `the sweep is listed, the served directory is not (${JSON.stringify(sweeps)})`);
+  const header = await page.$eval('header', (el) => el.textContent.replace(/\s+/g, ' ').trim());
+  check(!/\bruns runs\b/.test(header) && header.includes('/'), `the header names the served directory once (${header})`);
   await statusIsClean(page, 'runs');
   await screenshot(page, 'runs');
+
+  // A sweep's summary: its Markdown tables and figures.
+  await page.click('.sweep a.summary-link');
+  await page.waitForSelector('article.markdown table');
+  await page.waitForFunction(() => [...document.querySelectorAll('article.markdown img')].every((i) => i.complete));
+  const figures = await page.$$eval('article.markdown img', (images) => images.map((i) => i.naturalWidth));
+  check(figures.length >= 1 && figures.every((w) => w > 0), `the sweep summary shows its figures (${figures})`);
+  await statusIsClean(page, 'summary');
+  await screenshot(page, 'summary');
 
   // One run: curves, any logged value, config, episodes.
   await page.goto(`${url}#/run?path=${encodeURIComponent(options.run)}`);
@@ -116,9 +164,48 @@ try {
   check(runInk > 0.002, `run view draws its curves (${(100 * runInk).toFixed(2)}% of pixels)`);
   const config = await page.$eval('pre.config', (el) => el.textContent);
   check(config.includes('algorithm:'), 'run view shows config.yaml');
-  check((await page.$$('.uplot')).length >= 2, 'run view has the return chart and the any-value chart');
+  const metrics = await page.$$eval('.metric-grid .metric', (cells) => cells.map((c) => c.dataset.metric));
+  check(metrics.length >= 8 && metrics.includes('train/approx_kl') && metrics.includes('rollout/ep_len_mean'),
+    `run view draws every logged value as a grid (${metrics.length}: ${metrics.slice(0, 4).join(', ')}, …)`);
+  check((await page.$$('.metric-grid .uplot')).length === metrics.length, 'each logged value has its chart');
+  await ticksAreDistinct(page, 'run');
+  await page.$eval('input[aria-label=smoothing]', (el) => { el.value = '0.9'; el.dispatchEvent(new Event('input')); });
+  await page.waitForTimeout(300);
+  check(await page.$$eval('.u-legend .u-series', (rows) => rows.some((r) => r.textContent.includes('(raw)'))),
+    'smoothing keeps the raw curve behind the smoothed one');
   await statusIsClean(page, 'run');
   await screenshot(page, 'run');
+  await page.$eval('.metric-grid', (el) => el.scrollIntoView());
+  await page.waitForTimeout(200);
+  await screenshot(page, 'run_metrics');
+
+  // Logs from elsewhere whose returns span −1,190 … −1,120: distinct labels on every axis.
+  await page.goto(`${url}#/run?path=${encodeURIComponent(options.external)}`);
+  await page.waitForSelector('.metric-grid .uplot canvas');
+  await page.waitForTimeout(300);
+  const externalTicks = await ticksAreDistinct(page, 'external run');
+  check(externalTicks.some((labels) => labels.some((l) => /^-1\.1\d+k$/.test(l))),
+    `the narrow range of large returns reads to the needed digit (${JSON.stringify(externalTicks[0])})`);
+  await statusIsClean(page, 'external run');
+
+  // A model fit: its loss against epochs, its evaluation, no episodes to record.
+  await page.goto(`${url}#/run?path=${encodeURIComponent(options.fit)}`);
+  await page.waitForSelector('table.evaluation tbody tr');
+  await page.waitForTimeout(500);
+  const fitInk = await ink(page, '.headline .uplot canvas');
+  check(fitInk > 0.002, `fit view draws its loss (${(100 * fitInk).toFixed(2)}% of pixels)`);
+  const fitPage = await page.$eval('main', (el) => ({
+    text: el.textContent,
+    x: document.querySelector('select[aria-label="x axis"]').value,
+    heading: document.querySelector('.headline h3').textContent,
+    rows: document.querySelectorAll('table.evaluation tbody tr').length,
+  }));
+  check(fitPage.heading === 'Loss' && fitPage.x === 'time/epochs', `fit view plots loss against epochs (${fitPage.heading}, ${fitPage.x})`);
+  check(fitPage.rows === 4, `fit view shows evaluation.csv (${fitPage.rows} rows)`);
+  check(!fitPage.text.includes('tendril record'), 'fit view does not offer to record episodes');
+  await ticksAreDistinct(page, 'fit');
+  await statusIsClean(page, 'fit');
+  await screenshot(page, 'run_fit');
 
   // Several runs: mean and spread over seeds.
   const compare = options.compare.split(',');
@@ -129,8 +216,15 @@ try {
   check(compareInk > 0.002, `compare view draws mean and band (${(100 * compareInk).toFixed(2)}% of pixels)`);
   const legend = await page.$eval('ul.groups', (el) => el.textContent);
   check(legend.includes(`${compare.length} seeds`), `compare view groups the seeds (${legend.slice(0, 80)})`);
+  await ticksAreDistinct(page, 'compare');
   await statusIsClean(page, 'compare');
   await screenshot(page, 'compare');
+
+  // Tendril's runs beside logs from elsewhere: still distinct labels.
+  await page.goto(`${url}#/compare?runs=${encodeURIComponent([options.external, compare[0]].join('|'))}`);
+  await page.waitForSelector('.uplot canvas');
+  await page.waitForTimeout(300);
+  await ticksAreDistinct(page, 'compare with logs from elsewhere');
 
   // The 3D replay: draws, plays, scrubs.
   for (const [name, path] of [['replay', options.episode], ['replay_primitives', options.primitives]]) {

@@ -202,6 +202,10 @@ void ScalarLog::dump(int64_t step) {
   pending_.clear();
 }
 
+void ScalarLog::write_events(int64_t step, const std::map<std::string, double>& scalars) {
+  if (!scalars.empty()) write_event(event(now_seconds(), step, "", scalars));
+}
+
 namespace {
 
 struct Reader {

@@ -29,6 +29,9 @@ class ScalarLog {
 
   void record(const std::string& key, double value) { pending_[key] = value; }
   void dump(int64_t step);
+  // Writes `scalars` at `step` to the event file only (not to progress.csv, whose rows are the
+  // training iterations): the evaluations, which TensorBoard shows beside the training curves.
+  void write_events(int64_t step, const std::map<std::string, double>& scalars);
 
   const std::filesystem::path& csv_path() const { return csv_path_; }
   const std::filesystem::path& event_path() const { return event_path_; }

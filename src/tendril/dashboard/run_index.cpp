@@ -23,7 +23,7 @@ double modified_seconds(const ServedRoot& root, const fs::path& path) {
   return std::chrono::duration<double>(system.time_since_epoch()).count();
 }
 
-RunEntry describe_run(const ServedRoot& root, const fs::path& directory) {
+RunEntry describe_run(const ServedRoot& root, const fs::path& directory, const HeldLocks& locks) {
   RunEntry run;
   run.path = root.relative(directory);
   run.name = directory.filename().string();
@@ -33,16 +33,34 @@ RunEntry describe_run(const ServedRoot& root, const fs::path& directory) {
   for (const char* file : {"config.yaml", "progress.csv", "eval.csv"}) {
     run.modified = std::max(run.modified, modified_seconds(root, directory / file));
   }
+  std::optional<Config> config;
   if (const std::optional<fs::path> config_file = root.served_file(directory / "config.yaml")) {
     try {
-      const Config config = Config::load_file(*config_file);
-      run.env_id = config.child("env").get_or<std::string>("id", "");
-      run.algorithm = config.get_or<std::string>("algorithm", "");
+      config = Config::load_file(*config_file);
+      run.env_id = config->child("env").get_or<std::string>("id", "");
+      run.algorithm = config->get_or<std::string>("algorithm", "");
     } catch (const std::exception& e) {
       run.problem = std::string("config.yaml: ") + e.what();
     }
   }
+  run.state = read_run_state(root, directory, config ? &*config : nullptr, locks);
   return run;
+}
+
+// A sweep's summary/summary.md and figures, when `tendril sweep` wrote them.
+void find_summary(const ServedRoot& root, const fs::path& directory, SweepEntry& sweep) {
+  const std::optional<fs::path> page = root.served_file(directory / "summary" / "summary.md");
+  if (!page) return;
+  sweep.summary = root.relative(*page);
+  std::error_code error;
+  for (fs::directory_iterator it(page->parent_path(), error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string extension = it->path().extension().string();
+    if ((extension == ".png" || extension == ".svg") && root.served_file(it->path())) {
+      sweep.figures.push_back(root.relative(it->path()));
+    }
+  }
+  std::sort(sweep.figures.begin(), sweep.figures.end());
 }
 
 bool skipped(const fs::path& directory) {
@@ -54,9 +72,9 @@ bool skipped(const fs::path& directory) {
 // Adds the runs in `directory` (depth levels below the root) and returns how many of them lie
 // directly inside it.
 int visit(const ServedRoot& root, const fs::path& directory, int depth, int max_depth,
-          RunIndex& index) {
+          const HeldLocks& locks, RunIndex& index) {
   if (is_run_directory(root, directory)) {
-    index.runs.push_back(describe_run(root, directory));
+    index.runs.push_back(describe_run(root, directory, locks));
     return 1;
   }
   if (depth >= max_depth) return 0;
@@ -72,14 +90,16 @@ int visit(const ServedRoot& root, const fs::path& directory, int depth, int max_
     }
   }
   std::sort(children.begin(), children.end());
-  SweepEntry sweep{root.relative(directory), directory.filename().string(), {}};
+  SweepEntry sweep{root.relative(directory), directory.filename().string(), {}, {}, {}};
   for (const fs::path& child : children) {
     const std::size_t before = index.runs.size();
-    if (visit(root, child, depth + 1, max_depth, index) == 1) {
+    if (visit(root, child, depth + 1, max_depth, locks, index) == 1) {
       sweep.runs.push_back(index.runs[before].path);
     }
   }
-  if (sweep.runs.size() >= 2) index.sweeps.push_back(std::move(sweep));
+  if (depth == 0 || sweep.runs.empty()) return 0;  // the root's runs are the whole list
+  find_summary(root, directory, sweep);
+  if (sweep.runs.size() >= 2 || !sweep.summary.empty()) index.sweeps.push_back(std::move(sweep));
   return 0;
 }
 
@@ -94,7 +114,7 @@ bool is_run_directory(const ServedRoot& root, const fs::path& directory) {
 
 RunIndex index_runs(const ServedRoot& root, int max_depth) {
   RunIndex index;
-  visit(root, root.path(), 0, max_depth, index);
+  visit(root, root.path(), 0, max_depth, held_locks(), index);
   std::sort(index.runs.begin(), index.runs.end(),
             [](const RunEntry& a, const RunEntry& b) { return a.path < b.path; });
   std::sort(index.sweeps.begin(), index.sweeps.end(),

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "tendril/dashboard/run_state.hpp"
 #include "tendril/dashboard/served_root.hpp"
 
 namespace tendril::dashboard {
@@ -20,6 +21,7 @@ struct RunEntry {
   int episodes = 0;       // files in episodes/
   double modified = 0.0;  // newest of config, progress and eval, seconds since the epoch
   std::string problem;    // e.g. an unreadable config.yaml
+  RunState state;         // status, steps, last return
 };
 
 // A directory holding runs side by side (a sweep's output, seeds of one experiment).
@@ -27,6 +29,9 @@ struct SweepEntry {
   std::string path;
   std::string name;
   std::vector<std::string> runs;  // paths of the runs directly inside it
+  // `tendril sweep`'s summary/summary.md and its figures (.png, .svg), when written.
+  std::string summary;
+  std::vector<std::string> figures;
 };
 
 struct RunIndex {
@@ -39,7 +44,9 @@ struct RunIndex {
 bool is_run_directory(const ServedRoot& root, const std::filesystem::path& directory);
 
 // The runs at most `max_depth` directories below the root (not looking inside runs or hidden
-// directories), sorted by path; a directory with at least two runs directly inside is a sweep.
+// directories), sorted by path; a directory below the root with at least two runs directly
+// inside, or with one and a sweep summary (summary/summary.md), is a sweep. The root itself is
+// never listed as a sweep: its runs are the list.
 RunIndex index_runs(const ServedRoot& root, int max_depth = 6);
 
 // The episode files (*.tep) of a run directory's episodes/, sorted by name: only those that are

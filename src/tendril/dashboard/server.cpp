@@ -14,12 +14,14 @@
 #include <optional>
 #include <vector>
 
+#include "tendril/core/config.hpp"
 #include "tendril/core/episode_reader.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/dashboard/csv_slice.hpp"
 #include "tendril/dashboard/episode_json.hpp"
 #include "tendril/dashboard/json_writer.hpp"
 #include "tendril/dashboard/run_index.hpp"
+#include "tendril/dashboard/run_state.hpp"
 #include "tendril/dashboard/served_root.hpp"
 
 // After Eigen (through the episode reader): httplib.h brings in <resolv.h>, whose `_res` macro
@@ -89,6 +91,13 @@ std::string read_text(const fs::path& file) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+void write_state(JsonWriter& json, const RunState& state) {
+  json.key("kind").value(state.kind).key("status").value(state.status);
+  json.key("pid").value(state.pid).key("steps").value(state.steps).key("total").value(state.total);
+  json.key("last_return").value(state.last_return).key("last_eval").value(state.last_eval);
+  json.key("last_loss").value(state.last_loss).key("checkpoint").value(state.checkpoint);
+}
+
 void write_run(JsonWriter& json, const RunEntry& run) {
   json.begin_object();
   json.key("path").value(run.path).key("name").value(run.name);
@@ -96,6 +105,7 @@ void write_run(JsonWriter& json, const RunEntry& run) {
   json.key("has_progress").value(run.has_progress).key("has_eval").value(run.has_eval);
   json.key("episodes").value(run.episodes).key("modified").value(run.modified);
   json.key("problem").value(run.problem);
+  write_state(json, run.state);
   json.end_object();
 }
 
@@ -270,6 +280,9 @@ struct Server::Impl {
       json.begin_object().key("path").value(sweep.path).key("name").value(sweep.name);
       json.key("runs").begin_array();
       for (const std::string& run : sweep.runs) json.value(run);
+      json.end_array();
+      json.key("summary").value(sweep.summary).key("figures").begin_array();
+      for (const std::string& figure : sweep.figures) json.value(figure);
       json.end_array().end_object();
     }
     json.end_array().end_object();
@@ -292,10 +305,20 @@ struct Server::Impl {
       json.null();
     }
     json.key("files").begin_array();
-    for (const char* name : {"progress.csv", "eval.csv", "model.policy", "best_model.policy"}) {
+    for (const char* name : {"progress.csv", "eval.csv", "evaluation.csv", "model.policy",
+                             "best_model.policy", "model.tdm"}) {
       if (root.served_file(directory / name)) json.value(name);
     }
     json.end_array();
+    std::optional<Config> config;
+    try {
+      if (const std::optional<fs::path> file = root.served_file(directory / "config.yaml")) {
+        config = Config::load_file(*file);
+      }
+    } catch (const std::exception&) {  // the page shows the text as it is
+    }
+    write_state(json,
+                read_run_state(root, directory, config ? &*config : nullptr, held_locks()));
     json.key("episodes").begin_array();
     for (const fs::path& file : episode_files(root, directory)) {
       json.begin_object().key("path").value(root.relative(file));

@@ -5,6 +5,7 @@
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/run_lock.hpp"
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
@@ -124,6 +125,8 @@ FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool qu
           data.source);
 
   fs::create_directories(run_directory);
+  // Held while fitting: the dashboard shows the fit as running while a process holds it.
+  const RunLock lock(run_directory);
   write_file_atomically(run_directory / "config.yaml", e.config.dump(), "config");
   ScalarLog log(run_directory);
   const fs::path model_file = run_directory / kModelFileName;

@@ -118,6 +118,7 @@ class Run {
     const int64_t first_step = algorithm_->num_timesteps();
     log_.emplace(directory_, resuming, first_step);
     evaluation_.emplace(experiment_, directory_, *algorithm_, *env_, resuming);
+    evaluation_->report_to(&*log_);
     checkpoints_.emplace(experiment_, directory_, *algorithm_, options_.stop_at, identity);
     progress_line_.emplace(experiment_.n_timesteps, first_step);
   }

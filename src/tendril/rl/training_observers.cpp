@@ -89,6 +89,15 @@ bool ScalarLogObserver::on_iteration(const Progress& p) {
   return true;
 }
 
+void ScalarLogObserver::log_evaluation(int64_t timesteps, const envs::RunResult& evaluation) {
+  std::map<std::string, double> scalars = {{"eval/mean_reward", evaluation.mean_return()},
+                                           {"eval/mean_ep_length", evaluation.mean_length()}};
+  if (const std::optional<double> rate = evaluation.success_rate()) {
+    scalars["eval/success_rate"] = *rate;
+  }
+  log_.write_events(timesteps, scalars);
+}
+
 EvaluationObserver::EvaluationObserver(const Experiment& experiment, const fs::path& directory,
                                        Algorithm& algorithm, const envs::VecEnv& training_env,
                                        bool resuming)
@@ -151,6 +160,7 @@ envs::RunResult EvaluationObserver::evaluate(int64_t timesteps) {
   if (const std::optional<double> rate = eval.success_rate()) row << exact_text(*rate);
   row << '\n';
   append_to_file(directory_ / "eval.csv", row.str(), "eval.csv");
+  if (log_ != nullptr) log_->log_evaluation(timesteps, eval);
   if (experiment_.eval_save_best && (!best_mean_ || eval.mean_return() >= *best_mean_)) {
     algorithm_.save_policy(directory_ / "best_model.policy");
     best_mean_ = eval.mean_return();

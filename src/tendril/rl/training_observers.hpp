@@ -21,6 +21,9 @@ class ScalarLogObserver : public Observer {
  public:
   ScalarLogObserver(const std::filesystem::path& directory, bool resuming, int64_t first_step);
   bool on_iteration(const Progress& progress) override;
+  // An evaluation into the event file under SB3's EvalCallback names: eval/mean_reward,
+  // eval/mean_ep_length and, for envs that report success, eval/success_rate.
+  void log_evaluation(int64_t timesteps, const envs::RunResult& evaluation);
 
  private:
   ScalarLog log_;
@@ -42,6 +45,8 @@ class EvaluationObserver : public Observer {
   bool on_iteration(const Progress& progress) override;
   // Evaluates now (the final evaluation), records it and returns it.
   envs::RunResult evaluate(int64_t timesteps);
+  // Every evaluation is also logged to `log` (the TensorBoard event file); none when null.
+  void report_to(ScalarLogObserver* log) { log_ = log; }
 
   std::optional<double> best_mean() const { return best_mean_; }
   int64_t best_timesteps() const { return best_timesteps_; }
@@ -59,6 +64,7 @@ class EvaluationObserver : public Observer {
   int64_t last_timesteps_;
   std::optional<double> best_mean_;
   int64_t best_timesteps_ = 0;
+  ScalarLogObserver* log_ = nullptr;
 };
 
 // A checkpoint every `checkpoint_freq` steps (checkpoints/step_<N>.ckpt, the replay buffer

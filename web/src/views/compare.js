@@ -1,8 +1,8 @@
 // Several runs on one chart: each run its own curve, or the seeds of each group as their mean
 // with a ± one-standard-deviation band.
-import { LiveCsv } from '../api.js';
+import { api, LiveCsv } from '../api.js';
 import { aggregate, cleanCurve, seedGroup } from '../aggregate.js';
-import { CurveChart, palette } from '../chart.js';
+import { CurveChart, palette, smooth } from '../chart.js';
 import { compareHash, h, link, runHash, setStatus } from '../dom.js';
 
 const EVAL = 'eval/mean_return';
@@ -12,11 +12,13 @@ export async function showCompare(container, query) {
   if (paths.length === 0) throw new Error('no runs to compare');
   const grouped = query.get('group') === '1';
   let metric = query.get('metric') || 'rollout/ep_rew_mean';
-  const runs = paths.map((path) => ({
+  const described = await Promise.all(paths.map((path) => api.run(path)));
+  const runs = paths.map((path, i) => ({
     path,
     name: path.split('/').pop() || path,
-    progress: new LiveCsv(`${path}/progress.csv`),
-    evaluation: new LiveCsv(`${path}/eval.csv`),
+    files: described[i].files,
+    progress: new LiveCsv(`${path ? `${path}/` : ''}progress.csv`),
+    evaluation: new LiveCsv(`${path ? `${path}/` : ''}eval.csv`),
   }));
   const metricSelect = h('select', { 'aria-label': 'metric' });
   const groupBox = h('input', { type: 'checkbox', id: 'group' });
@@ -28,22 +30,34 @@ export async function showCompare(container, query) {
     metric = metricSelect.value;
     draw();
   });
+  const smoothing = h('input', {
+    type: 'range', min: 0, max: 0.99, step: 0.01, 'aria-label': 'smoothing',
+    value: localStorage.getItem('tendril.smoothing') ?? 0.6,
+  });
+  smoothing.addEventListener('input', () => {
+    localStorage.setItem('tendril.smoothing', smoothing.value);
+    draw();
+  });
   const chartBox = h('div', { class: 'chart' });
   const legend = h('ul', { class: 'groups' });
   container.append(
     h('h2', {}, `${runs.length} runs`),
     h('div', { class: 'toolbar' }, metricSelect,
-      h('label', { for: 'group' }, groupBox, ' mean ± std over seeds')),
+      h('label', { for: 'group' }, groupBox, ' mean ± std over seeds'),
+      h('label', {}, 'smoothing ', smoothing)),
     chartBox,
     legend,
   );
   const chart = new CurveChart(chartBox, { xLabel: 'environment steps', yLabel: metric, height: 380 });
 
+  // A run's curve of the metric, smoothed (each run before any mean over seeds); evaluations are
+  // few and are not smoothed.
   function curveOf(run) {
     if (metric === EVAL) {
       return cleanCurve(run.evaluation.column('timesteps') || [], run.evaluation.column('mean_return') || []);
     }
-    return cleanCurve(run.progress.column('time/total_timesteps') || [], run.progress.column(metric) || []);
+    const curve = cleanCurve(run.progress.column('time/total_timesteps') || [], run.progress.column(metric) || []);
+    return { x: curve.x, y: smooth(curve.y, Number(smoothing.value)) };
   }
 
   function draw() {
@@ -85,7 +99,11 @@ export async function showCompare(container, query) {
   }
 
   async function poll() {
-    const results = await Promise.all(runs.flatMap((r) => [r.progress.poll(), r.evaluation.poll()]));
+    // Only the files each run has (a missing one would be a 404 in the browser's console).
+    const results = await Promise.all(runs.flatMap((r) => [
+      r.files.includes('progress.csv') ? r.progress.poll() : false,
+      r.files.includes('eval.csv') ? r.evaluation.poll() : false,
+    ]));
     if (results.some(Boolean)) draw();
   }
   await poll();

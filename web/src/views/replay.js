@@ -3,7 +3,7 @@
 import uPlot from 'uplot';
 import { api } from '../api.js';
 import { formatNumber } from '../chart.js';
-import { h, runHash, setStatus } from '../dom.js';
+import { h, ordinal, runHash, setStatus } from '../dom.js';
 import { SceneView } from '../scene3d.js';
 
 function runOf(path) {
@@ -35,7 +35,7 @@ export async function showReplay(container, query) {
     h('h2', {}, path.split('/').pop(), run !== null ? h('small', {}, ' of ', h('a', { href: runHash(run) }, run || '(root)')) : null),
     h('p', { class: 'summary' }, meta,
       episode.summary ? ` · return ${formatNumber(episode.summary.return)} over ${episode.summary.steps} steps` : '',
-      episode.stride > 1 ? ` · every ${episode.stride}th of ${episode.frame_count} frames` : ''),
+      episode.stride > 1 ? ` · every ${ordinal(episode.stride)} of ${episode.frame_count} frames` : ''),
     episode.problem ? h('p', { class: 'problem' }, `Incomplete recording: ${episode.problem}. Showing the ${episode.frame_count} whole frames before it.`) : null,
     h('div', { class: 'replay' },
       viewport,
