@@ -2,7 +2,6 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <filesystem>
 #include <limits>
 
@@ -19,13 +18,6 @@ const char* signal_name(int signal) {
 }
 
 namespace {
-
-std::filesystem::path new_run_directory(const std::string& output) {
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-  return output + "-" + stamp;
-}
 
 // The exit status: 0 when the run finished or paused as asked, 128 + the signal when a signal
 // stopped it (the shell's convention), so scripts see the interruption.
@@ -90,7 +82,7 @@ int train_command(const Arguments& line) {
   const rl::Experiment experiment = rl::Experiment::from_config(config);
   const std::filesystem::path run = line.has("output")
                                         ? std::filesystem::path(line.value("output", ""))
-                                        : new_run_directory(experiment.output);
+                                        : rl::default_run_directory(experiment);
   std::printf("training %s on %s (%d envs) for %lld steps, seed %llu -> %s\n",
               experiment.algorithm.c_str(), experiment.env.id.c_str(), experiment.env.n_envs,
               static_cast<long long>(experiment.n_timesteps),

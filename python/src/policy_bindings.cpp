@@ -7,7 +7,6 @@
 #include <condition_variable>
 #include <csignal>
 #include <cstdio>
-#include <ctime>
 #include <exception>
 #include <filesystem>
 #include <functional>
@@ -94,13 +93,6 @@ class PyPolicy {
   envs::BatchMatrix observations_, actions_;
   ObjectLock lock_;  // object_lock.hpp
 };
-
-std::filesystem::path new_run_directory(const std::string& output) {
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-  return output + "-" + stamp;
-}
 
 // Runs `work` (a training, GIL-free) on a thread of its own while this thread, holding the GIL
 // between short waits, lets Python run its signal handlers: Ctrl-C raises KeyboardInterrupt
@@ -198,7 +190,7 @@ void bind_train(py::module_& m) {
           config.set(assignment.substr(0, equals), assignment.substr(equals + 1));
         }
         const rl::Experiment experiment = rl::Experiment::from_config(config);
-        const std::filesystem::path run = out ? *out : new_run_directory(experiment.output);
+        const std::filesystem::path run = out ? *out : rl::default_run_directory(experiment);
         rl::TrainOptions options;
         options.stop_at = stop_at;
         options.quiet = quiet;

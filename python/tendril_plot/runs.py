@@ -77,12 +77,15 @@ def expand_runs(paths):
 
 
 def seed_group(name, parent=""):
-    """A run's name without its seed token and the separators left at its ends:
-    "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" → "ppo_case1", "seed_3-tau_0.01" →
-    "tau_0.01"; a name that is only a seed ("seed_42") gives `parent`, the name of the directory
-    holding the run (a sweep over seeds alone), or "seeds". Runs differing only by seed share a group. The same rule
-    as the sweep summary's (rl::seed_group) and the dashboard's (web/src/aggregate.js)."""
+    """A run's name without its seed token, a trailing time stamp and the separators left at its
+    ends: "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" → "ppo_case1",
+    "seed_3-tau_0.01" → "tau_0.01", "ppo-seed1-20261128-093000" → "ppo" (`tendril train`'s
+    default name); a name that is only a seed ("seed_42") gives `parent`, the name of the
+    directory holding the run (a sweep over seeds alone), or "seeds". Runs differing only by
+    seed share a group. The same rule as the sweep summary's (rl::seed_group) and the
+    dashboard's (web/src/aggregate.js)."""
     stripped = re.sub(r"(^|[-_])seed_?\d+", "", name, count=1, flags=re.IGNORECASE)
+    stripped = re.sub(r"[-_]\d{8}-\d{6}$", "", stripped)  # the time stamp of `tendril train`
     return stripped.strip("-_") or parent or "seeds"
 
 

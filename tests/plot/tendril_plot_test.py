@@ -285,7 +285,10 @@ class SeedGroupTest(unittest.TestCase):
                  ("seed_3-tau_0.01", ""): "tau_0.01",
                  ("n_steps_64-seed_12-gamma_0.9", ""): "n_steps_64-gamma_0.9",
                  ("PPO_Seed7", ""): "PPO", ("seed_42", "ur5_ppo_base"): "ur5_ppo_base",
-                 ("seed_42", ""): "seeds", ("tau_0.01", ""): "tau_0.01"}
+                 ("seed_42", ""): "seeds", ("tau_0.01", ""): "tau_0.01",
+                 ("ppo_pendulum-seed1-20261128-093000", ""): "ppo_pendulum",
+                 ("ppo_pendulum-seed2-20261128-093512", ""): "ppo_pendulum",
+                 ("lr_0.001-20261128-093000", ""): "lr_0.001"}
         for (name, parent), group in cases.items():
             self.assertEqual(seed_group(name, parent), group, name)
 

@@ -29,6 +29,10 @@ TEST(SeedGroup, DropsTheSeedTokenAndTheSeparatorsItLeaves) {
   EXPECT_EQ(seed_group("seed_42", "ur5_ppo_base"), "ur5_ppo_base");
   EXPECT_EQ(seed_group("seed_42"), "seeds");
   EXPECT_EQ(seed_group("tau_0.01"), "tau_0.01");  // no seed: a group of its own
+  // `tendril train`'s default names: seeds of one experiment group, whenever each was trained.
+  EXPECT_EQ(seed_group("ppo_pendulum-seed1-20261128-093000"), "ppo_pendulum");
+  EXPECT_EQ(seed_group("ppo_pendulum-seed2-20261128-093512"), "ppo_pendulum");
+  EXPECT_EQ(seed_group("lr_0.001-20261128-093000"), "lr_0.001");
 }
 
 TEST(SpreadOf, MeanPopulationStdMinMax) {

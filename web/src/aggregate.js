@@ -2,10 +2,13 @@
 
 // A run's name without its seed token and the separators left at its ends ("n_steps_256-seed_3"
 // → "n_steps_256", "ppo_case1_seed0" → "ppo_case1", "seed_3-tau_0.01" → "tau_0.01", "seed_42" →
-// the name of the directory holding "seed_42"): runs that differ only by seed share a group, as in
+// the name of the directory holding "seed_42"; a trailing time stamp goes too, "ppo-seed1-20261128-
+// 093000" → "ppo"): runs that differ only by seed share a group, as in
 // `tendril sweep` and `tendril plot`.
 export function seedGroup(name, parent = '') {
-  const stripped = name.replace(/(^|[-_])seed_?\d+/i, '').replace(/^[-_]+|[-_]+$/g, '');
+  const stripped = name.replace(/(^|[-_])seed_?\d+/i, '')
+    .replace(/[-_]\d{8}-\d{6}$/, '')
+    .replace(/^[-_]+|[-_]+$/g, '');
   return stripped.length > 0 ? stripped : parent || 'seeds';
 }
 

@@ -121,8 +121,10 @@ std::string curve_csv(const CurveStats& stats) {
 
 std::string seed_group(const std::string& run_name, const std::string& parent) {
   static const std::regex seed_token("(^|[-_])seed_?[0-9]+", std::regex::icase);
+  static const std::regex time_stamp("[-_][0-9]{8}-[0-9]{6}$");
   std::string stripped =
       std::regex_replace(run_name, seed_token, "", std::regex_constants::format_first_only);
+  stripped = std::regex_replace(stripped, time_stamp, "");
   const std::size_t first = stripped.find_first_not_of("-_");
   if (first == std::string::npos) return parent.empty() ? "seeds" : parent;
   stripped = stripped.substr(first, stripped.find_last_not_of("-_") - first + 1);

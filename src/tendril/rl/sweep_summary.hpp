@@ -11,9 +11,10 @@
 
 namespace tendril::rl {
 
-// A run's name without its seed token and the separators left at its ends, the group of runs
-// that differ only by seed: "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" →
-// "ppo_case1", "seed_3-tau_0.01" → "tau_0.01"; a name that is only a seed ("seed_42") gives
+// A run's name without its seed token, a trailing time stamp and the separators left at its ends,
+// the group of runs that differ only by seed: "n_steps_256-seed_3" → "n_steps_256",
+// "ppo_case1_seed0" → "ppo_case1", "seed_3-tau_0.01" → "tau_0.01", "ppo-seed1-20261128-093000"
+// → "ppo" (`tendril train`'s default name); a name that is only a seed ("seed_42") gives
 // `parent`, the name of the directory holding the run, or "seeds". The same rule as `tendril
 // plot curves` (python/tendril_plot, runs.seed_group) and the dashboard, so a sweep's tables
 // and figures group runs alike.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <iterator>
 #include <new>
@@ -258,6 +259,13 @@ fs::path newest_intact_checkpoint(const fs::path& run_directory,
   return newest_usable_checkpoint(
       run_directory, [](const fs::path& file) { ArchiveReader verified(file, "checkpoint"); },
       skipped);
+}
+
+fs::path default_run_directory(const Experiment& experiment) {
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  return experiment.output + "-seed" + std::to_string(experiment.seed) + "-" + stamp;
 }
 
 TrainResult train(const Experiment& experiment, const fs::path& run_directory,

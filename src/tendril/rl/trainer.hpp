@@ -52,6 +52,10 @@ struct TrainResult {
   int interrupted = 0;  // the signal that stopped the run early (a checkpoint holds its state)
 };
 
+// The directory a run of `experiment` gets when none is named: <output>-seed<N>-<time stamp>, so
+// that runs of one experiment that differ only by seed group together (seed_group).
+std::filesystem::path default_run_directory(const Experiment& experiment);
+
 // Starts a run in `run_directory`, which must not exist or be empty (nothing is overwritten).
 // Raises Error naming the holder when another process holds the directory.
 TrainResult train(const Experiment& experiment, const std::filesystem::path& run_directory,
