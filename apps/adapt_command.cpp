@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -18,6 +20,8 @@
 #include "tendril/adapt/pneumatic_reaching_robot.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
+#include "tendril/core/run_lock.hpp"
 #include "tendril/rl/policy.hpp"
 
 namespace tendril::apps {
@@ -114,6 +118,43 @@ int steps_for(const Config& gprca, const std::string& scenario) {
   return steps;
 }
 
+// One summary.csv row per (goal, scenario, seed).
+std::string summary_row(const RunSummary& s) {
+  char row[512];
+  std::snprintf(
+      row, sizeof row, "%s,%s,%s,%llu,%d,%.2f,%d,%d,%.3f,%.1f,%d,%.1f,%.2f,%.3f,%.3f,%.3f\n",
+      s.method.c_str(), s.goal.c_str(), s.scenario.c_str(), static_cast<unsigned long long>(s.seed),
+      s.trials, s.steps_per_trial, s.goal_flag ? 1 : 0, s.collisions, s.final_distance,
+      s.robot_seconds, s.oracle_trials, s.oracle_robot_seconds, s.wall_seconds, s.max_update_ms,
+      s.median_update_ms, s.max_search_s);
+  return row;
+}
+
+std::string file_text(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  require(in.good(), "cannot read", file.string());
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The output directory of this configuration: a new (or empty) one, or one an earlier run of the
+// same configuration wrote (its config.yaml equal to this one), which the run continues. Anything
+// else is refused: nothing is overwritten, and two configurations never share a summary.
+void claim_output(const fs::path& output, const std::string& resolved) {
+  const fs::path config_file = output / "config.yaml";
+  if (fs::exists(output) && !fs::is_empty(output)) {
+    require(fs::exists(config_file),
+            "exists and is not an adaptation output; nothing is overwritten", output.string());
+    require(file_text(config_file) == resolved,
+            "holds an adaptation of another configuration (its config.yaml differs); nothing is "
+            "overwritten: choose another output",
+            output.string());
+    std::printf("continuing %s: adaptations already written are kept\n", output.c_str());
+    return;
+  }
+  fs::create_directories(output);
+  write_file_atomically(config_file, resolved, "adaptation config");
+}
+
 }  // namespace
 
 int adapt_command(const Arguments& line) {
@@ -122,7 +163,7 @@ int adapt_command(const Arguments& line) {
   require(method == "gprca" || method == "boac", "must be gprca or boac, got '" + method + "'",
           config.where("method"));
   const fs::path output = line.value("output", config.get_or<std::string>("output", ""));
-  require(!output.empty(), "no output directory: set `output` or pass --out", config.source());
+  require(!output.empty(), "no output directory: set `output` or pass -o", config.source());
   const Config task = config.child("task");
   const Config robot = config.child("robot");
   const Config model = config.child("model");
@@ -163,13 +204,28 @@ int adapt_command(const Arguments& line) {
             "unknown key '" + key + "'", config.source());
   }
 
+  const std::string resolved = config.dump_resolved();
+  claim_output(output, resolved);
+  const RunLock lock(output);  // one process at a time; a second is refused naming the holder
+  catch_interrupts();          // Ctrl-C ends the current adaptation, then stops; rerun to continue
+
   std::string invocation = "tendril adapt";
   for (const std::string& arg : line.raw) invocation += " " + arg;
-  std::vector<RunSummary> summaries;
+  std::vector<std::string> rows;
+  int stopped_by = 0;
   for (const std::string& goal : goals) {
     const std::unique_ptr<rl::Policy> policy = load_trained_policy(policy_files.at(goal));
     for (const std::string& scenario : scenarios) {
       for (uint64_t seed : seeds) {
+        // Each adaptation is seeded on its own: one written by an earlier, stopped run of this
+        // configuration is exactly what this one would compute, and is kept.
+        const fs::path directory = output / goal / scenario / ("seed_" + std::to_string(seed));
+        const fs::path row_file = directory / "summary_row.csv";
+        if (fs::exists(row_file)) {
+          rows.push_back(file_text(row_file));
+          continue;
+        }
+        if (stopped_by != 0) continue;
         const auto start = std::chrono::steady_clock::now();
         Config robot_params =
             assembled({&task}, {{"robot", &robot}}, config.source() + " (task, robot)");
@@ -200,8 +256,9 @@ int adapt_command(const Arguments& line) {
         summary.seed = seed;
         summary.wall_seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        const fs::path directory = output / goal / scenario / ("seed_" + std::to_string(seed));
         adapt::write_adaptation_logs(directory, result, arm->state_names());
+        rows.push_back(summary_row(summary));
+        write_file_atomically(row_file, rows.back(), "adaptation summary row");
         std::printf(
             "%s %-4s %s seed %llu: %2d trials of %5.1f steps, goal %s, %d collisions, final "
             "%6.2f mm; robot %5.1f s; update max %.1f ms; %.1f s wall\n",
@@ -210,7 +267,7 @@ int adapt_command(const Arguments& line) {
             summary.collisions, summary.final_distance, summary.robot_seconds,
             summary.max_update_ms, summary.wall_seconds);
         std::fflush(stdout);
-        summaries.push_back(summary);
+        stopped_by = interrupt_signal();
       }
     }
   }
@@ -219,19 +276,13 @@ int adapt_command(const Arguments& line) {
       << "method,goal,scenario,seed,trials,steps_per_trial,goal_flag,collisions,final_distance_mm,"
          "robot_s,oracle_trials,oracle_robot_s,wall_s,max_update_ms,median_update_ms,"
          "max_search_s\n";
-  for (const RunSummary& s : summaries) {
-    char row[512];
-    std::snprintf(
-        row, sizeof row, "%s,%s,%s,%llu,%d,%.2f,%d,%d,%.3f,%.1f,%d,%.1f,%.2f,%.3f,%.3f,%.3f\n",
-        s.method.c_str(), s.goal.c_str(), s.scenario.c_str(),
-        static_cast<unsigned long long>(s.seed), s.trials, s.steps_per_trial, s.goal_flag ? 1 : 0,
-        s.collisions, s.final_distance, s.robot_seconds, s.oracle_trials, s.oracle_robot_seconds,
-        s.wall_seconds, s.max_update_ms, s.median_update_ms, s.max_search_s);
-    csv << row;
-  }
-  fs::create_directories(output);
+  for (const std::string& row : rows) csv << row;
   write_file_atomically(output / "summary.csv", csv.str(), "adaptation summary");
-  write_file_atomically(output / "config.yaml", config.dump_resolved(), "adaptation config");
+  if (stopped_by != 0) {
+    std::printf("stopped by a signal after %zu adaptations; the same command continues\n",
+                rows.size());
+    return 128 + stopped_by;
+  }
   std::printf("wrote %s/summary.csv and the per-run logs below it\n", output.c_str());
   return 0;
 }
