@@ -32,7 +32,8 @@ std::vector<CommandSpec> command_table() {
           "An experiment with a `safety:` section co-trains a safety agent beside the task "
           "agent (writes safety.critic; seed 001 ch. 6); one with a `constrained:` section "
           "trains a constrained baseline (Lagrangian relaxation or RSPO).",
-      .options = {output("The run directory (default: the file's `output` plus a time stamp)."),
+      .options = {output("The run directory (default: the file's `output` -seed<N>-<time stamp>; "
+                         "seeds of one experiment group together in report, plot and serve)."),
                   {"stop-at", "STEPS",
                    "Pause at the first checkpoint at or past STEPS (needs checkpoint_freq)."},
                   {"quiet", "", "No progress line."}},
@@ -358,8 +359,12 @@ std::vector<CommandSpec> command_table() {
       .min_positionals = 1,
       .max_positionals = 1,
       .summary = "Adapt trained policies online on the pneumatic arm (seed 002: BOAC or GPRCA).",
-      .description = "Every goal × damage scenario × seed of the file, with per-trial logs and "
-                     "summary.csv (Table II's parameters P1–P5).",
+      .description =
+          "Every goal × damage scenario × seed of the file, with per-trial logs and summary.csv "
+          "(Table II's parameters P1–P5). Ctrl-C (or SIGTERM) stops after the current "
+          "adaptation; the same command continues, keeping the adaptations written (each is "
+          "seeded on its own, so the result is the uninterrupted one's). An existing output of "
+          "another configuration, or that is no adaptation's, is refused: nothing is overwritten.",
       .options = {output("The output directory (default the file's `output`).")},
       .takes_set = true,
       .set_help = "Change a key of the file, e.g. --set seeds=[0].",
@@ -457,11 +462,11 @@ std::vector<CommandSpec> command_table() {
       .summary = "Figures (PNG, SVG, PDF) of runs, sweeps, CSV files and recorded episodes "
                  "(matplotlib); videos of recorded episodes.",
       .description = "`tendril plot <kind> --help` lists each kind's options (docs/plotting.md). "
-                     "`plot episode EPISODE --video --out FILE.mp4` (or .webm, .gif) writes a "
+                     "`plot episode EPISODE --video -o FILE.mp4` (or .webm, .gif) writes a "
                      "video of a recorded episode instead, drawn by tendril's software "
                      "rasterizer and encoded by ffmpeg.",
-      .examples = {"tendril plot curves runs/sweeps/my_sweep --out curves.png",
-                   "tendril plot episode runs/arm/episodes/episode_0000.tep --video --out arm.mp4"},
+      .examples = {"tendril plot curves runs/sweeps/my_sweep -o curves.png",
+                   "tendril plot episode runs/arm/episodes/episode_0000.tep --video -o arm.mp4"},
       .passthrough = true,
       .run = plot_command,
   });
@@ -481,8 +486,9 @@ std::vector<CommandSpec> command_table() {
                   seed_option("Limb: the twin's seed (default 0)."),
                   {"command-port", "P", "Arm: the regulators' UDP port (default 51000)."},
                   {"mocap-port", "P", "Arm: where the motion capture streams (default 51001)."},
-                  {"pace", "realtime|lockstep", "Real time (default), or robot time paused while "
-                                                "the host answers (tests)."}},
+                  {"pace", "realtime|lockstep",
+                   "Real time (default), or robot time paused while "
+                   "the host answers (tests)."}},
       .takes_set = true,
       .set_help = "Arm: a parameter of PneumaticArm/Robot-v0's twin.",
       .examples = {"tendril robot emulate limb --link /tmp/limb"},

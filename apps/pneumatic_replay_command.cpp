@@ -16,7 +16,7 @@ namespace tendril::apps {
 int pneumatic_replay(const Arguments& line) {
   const Config config = line.load_config();
   const std::string directory = line.value("output", config.get_or<std::string>("output", ""));
-  require(!directory.empty(), "no output directory: set `output` or pass --out", config.source());
+  require(!directory.empty(), "no output directory: set `output` or pass -o", config.source());
   std::string invocation = "tendril data replay";
   for (const std::string& arg : line.raw) invocation += " " + arg;
   const bool open_loop = config.has("open_loop");

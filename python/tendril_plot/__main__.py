@@ -48,7 +48,8 @@ def circle(text):
 
 
 def common(parser, default_size):
-    parser.add_argument("--out", required=True, help="the figure's file: .png, .svg or .pdf")
+    parser.add_argument("-o", "--output", "--out", dest="out", required=True,
+                        help="the figure's file: .png, .svg or .pdf (a video: .mp4)")
     parser.add_argument("--title")
     parser.add_argument("--xlabel")
     parser.add_argument("--ylabel")
