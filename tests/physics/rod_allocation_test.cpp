@@ -75,5 +75,26 @@ TEST(RodAllocation, Case3ArmWithContactAndRateLimitActsWithoutAllocating) {
   EXPECT_GT(arm.contact->contacts(), 0) << "the arm should be touching the wall";
 }
 
+// Implicit steps allocate nothing either, once a first step has sized the buffer that holds
+// the parts' state at a step's start (to undo a failed step).
+TEST(RodAllocation, ImplicitArmsActWithoutAllocating) {
+  for (RodIntegrator integrator : {RodIntegrator::kBackwardEuler, RodIntegrator::kBdf2}) {
+    ElasticaArmSpec tracking = ElasticaArmSpec::tracking();
+    tracking.integrator = integrator;
+    ElasticaArm arm = build_elastica_arm(tracking);
+    arm.rod.add<AnalyticalLinearDamping>(0.1, 0.001);
+    ASSERT_TRUE(arm.rod.advance(1));
+    EXPECT_EQ(allocations_while_acting(arm, 100, 1, 0.0, 0.3), 0) << integrator_name(integrator);
+
+    ElasticaArmSpec obstacles = ElasticaArmSpec::structured_obstacles();
+    obstacles.integrator = integrator;
+    ElasticaArm case3 = build_elastica_arm(obstacles);
+    case3.muscles->set_targets(Eigen::Vector2d(0.6, 0.6));
+    ASSERT_TRUE(case3.rod.advance(300));  // bend into the wall first
+    EXPECT_EQ(allocations_while_acting(case3, 50, 1, 0.6, 0.3), 0) << integrator_name(integrator);
+    EXPECT_GT(case3.contact->contacts(), 0) << "the arm should be touching the wall";
+  }
+}
+
 }  // namespace
 }  // namespace tendril::physics

@@ -40,10 +40,16 @@ ElasticaArm build_elastica_arm(const ElasticaArmSpec& spec) {
   rod_spec.direction = spec.direction;
   rod_spec.normal = spec.normal;
   rod_spec.time_step = spec.time_step;
+  rod_spec.integrator = spec.integrator;
+  SplineActuationSpec actuation = spec.actuation;
+  if (spec.integrator != RodIntegrator::kPositionVerlet) {
+    rod_spec.time_step = spec.implicit_step;
+    actuation.max_change_per_step *= spec.implicit_step / spec.time_step;
+  }
   ElasticaArm arm{Rod(rod_spec), nullptr, nullptr};
   arm.rod.add<FixedEnd>();
   arm.rod.add<InternalDamping>(spec.damping);
-  arm.muscles = &arm.rod.add<SplineActuation>(spec.actuation);
+  arm.muscles = &arm.rod.add<SplineActuation>(actuation);
   if (!spec.obstacles.empty()) arm.contact = &arm.rod.add<CylinderContact>(spec.obstacles, spec.wall);
   return arm;
 }

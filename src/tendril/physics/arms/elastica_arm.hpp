@@ -14,7 +14,11 @@ namespace tendril::physics {
 // internal damping ν = 30 kg/(m·s), spline muscle couples on every element (material frame).
 struct ElasticaArmSpec {
   int n_elements = 20;
-  double time_step = 2.0e-4;
+  double time_step = 2.0e-4;  // s, the paper's position-Verlet step
+  // How the rod advances: the paper's position Verlet at time_step, or an implicit integrator
+  // (RodIntegrator) at implicit_step; the muscles' rate limit then keeps its rate per second.
+  RodIntegrator integrator = RodIntegrator::kPositionVerlet;
+  double implicit_step = 1.4e-3;  // s, one step per RL action of the four cases
   Eigen::Vector3d base_position = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction = Eigen::Vector3d::UnitY();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();

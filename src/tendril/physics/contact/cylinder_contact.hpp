@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "tendril/physics/contact/segment_distance.hpp"
 #include "tendril/physics/contact/soft_wall.hpp"
 #include "tendril/physics/rod/rod_part.hpp"
 
@@ -26,15 +27,23 @@ struct Cylinder {
 class CylinderContact final : public RodPart {
  public:
   CylinderContact(std::vector<Cylinder> cylinders, SoftWall wall = {});
-  uint32_t stages() const override { return kContact; }
+  // kStartStep: the step's set of contacts is decided anew (WallContacts).
+  uint32_t stages() const override { return kStartStep | kContact; }
   void attach(const RodModel& model, const RodState& state) override;
+  void start_step(const RodModel& model, RodState& state, double step) override;
   void add_contact_loads(const RodModel& model, RodState& state) override;
+  void add_load_derivatives(const RodModel& model, const RodState& state,
+                            RodJacobian& jacobian) const override;
 
   const std::vector<Cylinder>& cylinders() const { return cylinders_; }
   // Element–cylinder pairs in contact during the last step.
   int contacts() const { return contacts_; }
 
  private:
+  void find_contacts(const RodModel& model, RodState& state);
+  void respond(const RodModel& model, RodState& state, int element, int wall,
+               const ClosestPoints& closest, PushRule rule);
+
   std::vector<Cylinder> cylinders_;
   SoftWall wall_;
   int contacts_ = 0;
@@ -42,6 +51,7 @@ class CylinderContact final : public RodPart {
   Vectors midpoints_;
   Eigen::VectorXd element_reach_;
   Eigen::VectorXd near_;  // 1 where an element's midpoint is within reach of the current axis
+  WallContacts recorded_;
 };
 
 // Soft-wall contact with a fixed plane through `point` with outward unit `normal`: an element
@@ -49,12 +59,17 @@ class CylinderContact final : public RodPart {
 class PlaneContact final : public RodPart {
  public:
   PlaneContact(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, SoftWall wall = {});
-  uint32_t stages() const override { return kContact; }
+  uint32_t stages() const override { return kStartStep | kContact; }
+  void attach(const RodModel& model, const RodState& state) override;
+  void start_step(const RodModel& model, RodState& state, double step) override;
   void add_contact_loads(const RodModel& model, RodState& state) override;
+  void add_load_derivatives(const RodModel& model, const RodState& state,
+                            RodJacobian& jacobian) const override;
 
  private:
   Eigen::Vector3d point_, normal_;
   SoftWall wall_;
+  WallContacts recorded_;
 };
 
 }  // namespace tendril::physics

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "tendril/core/error.hpp"
+#include "tendril/physics/rod/internal_load_derivatives.hpp"
 
 namespace tendril::physics {
 
@@ -11,6 +12,8 @@ namespace tendril::physics {
 // 3 r + c of the directors is Q(r, c), row r of Q being d_{r+1} in the lab frame.
 
 void ActiveStrainLoads::resize(const RodModel& model) {
+  stresses_ = Vectors::Zero(3, model.n_elements);
+  couples_ = Vectors::Zero(3, model.n_voronoi());
   lab_stresses_.resize(3, model.n_elements);
   bend_.resize(3, model.n_voronoi());
   quadrature_.resize(3, model.n_voronoi());
@@ -37,6 +40,7 @@ void ActiveStrainLoads::add(const RodModel& model, RodState& state, const Vector
                        row(state.external_torques, 2)};
   const double* dilatation = state.dilatations.data();
   const double* rest_length = model.rest_lengths.data();
+  double* kept_stress[3] = {row(stresses_, 0), row(stresses_, 1), row(stresses_, 2)};
 
   // Stretch and shear: δn_i = −S_i δσ_i (material frame); the lab-frame stress Q_iᵀ δn_i / e_i,
   // and element i's couple (Q t × δn) l̂.
@@ -45,6 +49,9 @@ void ActiveStrainLoads::add(const RodModel& model, RodState& state, const Vector
     const double n0 = -stiffness[0][i] * sigma[0][i];
     const double n1 = -stiffness[1][i] * sigma[1][i];
     const double n2 = -stiffness[2][i] * sigma[2][i];
+    kept_stress[0][i] = n0;
+    kept_stress[1][i] = n1;
+    kept_stress[2][i] = n2;
     const double inv_e = 1.0 / dilatation[i];
     lab[0][i] = (q[0][i] * n0 + q[3][i] * n1 + q[6][i] * n2) * inv_e;
     lab[1][i] = (q[1][i] * n0 + q[4][i] * n1 + q[7][i] * n2) * inv_e;
@@ -78,6 +85,7 @@ void ActiveStrainLoads::add(const RodModel& model, RodState& state, const Vector
                             row(state.curvatures, 2)};
   double* b[3] = {row(bend_, 0), row(bend_, 1), row(bend_, 2)};
   double* a[3] = {row(quadrature_, 0), row(quadrature_, 1), row(quadrature_, 2)};
+  double* kept_couple[3] = {row(couples_, 0), row(couples_, 1), row(couples_, 2)};
   const double* voronoi_dilatation = state.voronoi_dilatations.data();
   const double* rest_voronoi = model.rest_voronoi_lengths.data();
 #pragma omp simd
@@ -85,6 +93,9 @@ void ActiveStrainLoads::add(const RodModel& model, RodState& state, const Vector
     const double d0 = -bend_stiffness[0][j] * kappa_shift[0][j];
     const double d1 = -bend_stiffness[1][j] * kappa_shift[1][j];
     const double d2 = -bend_stiffness[2][j] * kappa_shift[2][j];
+    kept_couple[0][j] = d0;
+    kept_couple[1][j] = d1;
+    kept_couple[2][j] = d2;
     const double eps = voronoi_dilatation[j];
     const double inv_eps3 = 1.0 / (eps * eps * eps);
     const double h = 0.5 * rest_voronoi[j] * inv_eps3;
@@ -103,6 +114,11 @@ void ActiveStrainLoads::add(const RodModel& model, RodState& state, const Vector
     for (int i = 1; i < count; ++i) t[i] += b[c][i] - b[c][i - 1] + a[c][i] + a[c][i - 1];
     t[count] += -b[c][count - 1] + a[c][count - 1];
   }
+}
+
+void ActiveStrainLoads::add_derivatives(const RodModel& model, const RodState& state,
+                                        RodJacobian& jacobian) const {
+  add_fixed_stress_derivatives(model, state, stresses_, couples_, jacobian);
 }
 
 }  // namespace tendril::physics

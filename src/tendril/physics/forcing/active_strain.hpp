@@ -5,6 +5,8 @@
 
 namespace tendril::physics {
 
+class RodJacobian;
+
 // The loads of an active (spontaneous) strain: a rod whose rest strains are shifted by
 // σ̂ → σ̂ + δσ (per element) and κ̂ → κ̂ + δκ (per interior Voronoi point), both in the material
 // frame, feels exactly the internal loads of the unshifted rod plus these, because the kernel
@@ -28,8 +30,14 @@ class ActiveStrainLoads {
   void resize(const RodModel& model);
   void add(const RodModel& model, RodState& state, const Vectors& stretch,
            const Vectors& curvature);
+  // The derivatives of the loads of the last `add` (with its shifts held fixed) for an implicit
+  // step: the geometric terms of the internal loads' derivatives with the stresses δn and
+  // couples δτ (internal_load_derivatives.hpp).
+  void add_derivatives(const RodModel& model, const RodState& state, RodJacobian& jacobian) const;
 
  private:
+  Vectors stresses_;      // δn = −S δσ per element
+  Vectors couples_;       // δτ = −B δκ per Voronoi point
   Vectors lab_stresses_;  // Qᵀ δn / e per element
   Vectors bend_;          // δτ / ε³ per Voronoi point
   Vectors quadrature_;    // ½ (κ × δτ) D̂ / ε³ per Voronoi point

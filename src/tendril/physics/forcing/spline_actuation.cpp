@@ -83,12 +83,15 @@ void SplineActuation::update_couples() {
   }
 }
 
-void SplineActuation::add_loads(const RodModel&, RodState& state) {
+void SplineActuation::start_step(const RodModel&, RodState&, double) {
   if (std::isfinite(spec_.max_change_per_step) && current_ != targets_) {
     const double limit = spec_.max_change_per_step;
     current_ += (targets_ - current_).cwiseMax(-limit).cwiseMin(limit);
     update_couples();
   }
+}
+
+void SplineActuation::add_loads(const RodModel&, RodState& state) {
   state.external_torques += couples_;
 }
 

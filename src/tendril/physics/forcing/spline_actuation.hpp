@@ -38,8 +38,10 @@ class SplineActuation final : public RodPart {
  public:
   explicit SplineActuation(SplineActuationSpec spec);
 
-  uint32_t stages() const override { return kLoads; }
+  // Material-frame couples: their derivatives vanish.
+  uint32_t stages() const override { return kStartStep | kLoads; }
   void attach(const RodModel& model, const RodState& state) override;
+  void start_step(const RodModel& model, RodState& state, double step) override;
   void add_loads(const RodModel& model, RodState& state) override;
   void save_state(SnapshotWriter& out) const override;
   void load_state(SnapshotReader& in) override;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "tendril/core/error.hpp"
+#include "tendril/physics/rod/rod_jacobian.hpp"
 
 namespace tendril::physics {
 
@@ -122,6 +123,24 @@ void Tendons::add_loads(const RodModel& model, RodState& state) {
                                   q[3 * row + 2][i] * couple.z());
       }
     }
+  }
+}
+
+void Tendons::add_load_derivatives(const RodModel& model, const RodState& state,
+                                   RodJacobian& jacobian) const {
+  double compression = 0.0;
+  for (double tension : tensions_) compression += tension;
+  if (compression == 0.0) return;
+  // +C t_i on node i and −C t_i on node i + 1, with ∂t_i/∂(x_{i+1} − x_i) = (I − t tᵀ)/l.
+  for (int i = 0; i < model.n_elements; ++i) {
+    const Eigen::Vector3d t = state.tangents.col(i);
+    const Eigen::Matrix3d block =
+        compression / state.lengths[i] * (Eigen::Matrix3d::Identity() - t * t.transpose());
+    const int a = RodJacobian::node(i), b = RodJacobian::node(i + 1);
+    jacobian.add_stiffness(a, a, -block);
+    jacobian.add_stiffness(a, b, block);
+    jacobian.add_stiffness(b, a, block);
+    jacobian.add_stiffness(b, b, -block);
   }
 }
 

@@ -41,6 +41,12 @@ class Tendons final : public RodPart {
   uint32_t stages() const override { return kLoads; }
   void attach(const RodModel& model, const RodState& state) override;
   void add_loads(const RodModel& model, RodState& state) override;
+  // For an implicit step, the compression's change with the elements' directions at the last
+  // step's tensions, T (I − t tᵀ)/l. Left out: the tensions' change with the tendons' lengths
+  // (it couples every element to every other) and the couples' change with the relative
+  // rotation of neighbouring frames; Newton's method takes those as a fixed-point iteration.
+  void add_load_derivatives(const RodModel& model, const RodState& state,
+                            RodJacobian& jacobian) const override;
   void save_state(SnapshotWriter& out) const override;
   void load_state(SnapshotReader& in) override;
 

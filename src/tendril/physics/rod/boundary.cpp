@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 
 #include "tendril/core/error.hpp"
+#include "tendril/physics/rod/rod_jacobian.hpp"
 
 namespace tendril::physics {
 
@@ -29,6 +30,13 @@ void FixedEnd::constrain_values(const RodModel&, RodState& state) {
 void FixedEnd::constrain_rates(const RodModel&, RodState& state) {
   state.velocities.col(0).setZero();
   state.angular_velocities.col(0).setZero();
+}
+
+void FixedEnd::fix_rates(const RodModel&, RodJacobian& jacobian) const {
+  for (int axis = 0; axis < 3; ++axis) {
+    jacobian.fix_rate(RodJacobian::node(0) + axis);
+    jacobian.fix_rate(RodJacobian::element(0) + axis);
+  }
 }
 
 GeneralConstraint::GeneralConstraint(int node, std::array<bool, 3> translations, int element,
@@ -58,6 +66,13 @@ void GeneralConstraint::constrain_rates(const RodModel&, RodState& state) {
   for (int axis = 0; axis < 3; ++axis) {
     if (translations_[axis]) state.velocities(axis, node_) = 0.0;
     if (rotations_[axis]) state.angular_velocities(axis, element_) = 0.0;
+  }
+}
+
+void GeneralConstraint::fix_rates(const RodModel&, RodJacobian& jacobian) const {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (translations_[axis]) jacobian.fix_rate(RodJacobian::node(node_) + axis);
+    if (rotations_[axis]) jacobian.fix_rate(RodJacobian::element(element_) + axis);
   }
 }
 

@@ -18,6 +18,7 @@ class FixedEnd final : public RodPart {
   void attach(const RodModel& model, const RodState& state) override;
   void constrain_values(const RodModel& model, RodState& state) override;
   void constrain_rates(const RodModel& model, RodState& state) override;
+  void fix_rates(const RodModel& model, RodJacobian& jacobian) const override;
 
  private:
   bool given_ = false;
@@ -38,6 +39,7 @@ class GeneralConstraint final : public RodPart {
   void attach(const RodModel& model, const RodState& state) override;
   void constrain_values(const RodModel& model, RodState& state) override;
   void constrain_rates(const RodModel& model, RodState& state) override;
+  void fix_rates(const RodModel& model, RodJacobian& jacobian) const override;
 
  private:
   int node_;

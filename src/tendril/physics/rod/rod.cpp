@@ -8,8 +8,11 @@
 
 namespace tendril::physics {
 
-Rod::Rod(const RodSpec& spec) : model_(RodModel::build(spec)) {
+Rod::Rod(const RodSpec& spec) : model_(RodModel::build(spec)), integrator_(spec.integrator) {
   state_.resize(model_);
+  if (integrator_ != RodIntegrator::kPositionVerlet) {
+    implicit_ = std::make_unique<ImplicitStepper>(model_, integrator_, spec.newton);
+  }
   const Eigen::Vector3d d3 = spec.direction;
   const Eigen::Vector3d d1 = spec.normal;
   const Eigen::Vector3d d2 = d3.cross(d1);
@@ -30,19 +33,15 @@ Rod::Rod(const RodSpec& spec) : model_(RodModel::build(spec)) {
 void Rod::attach(std::unique_ptr<RodPart> part) {
   require(part != nullptr, "cannot attach a null part", "Rod::attach");
   part->attach(model_, state_);
-  RodPart* raw = part.get();
-  const uint32_t stages = raw->stages();
-  if (stages & kConstrainValues) constrain_values_.push_back(raw);
-  if (stages & kLoads) loads_.push_back(raw);
-  if (stages & kContact) contact_.push_back(raw);
-  if (stages & kConstrainRates) constrain_rates_.push_back(raw);
-  if (stages & kDampRates) damp_rates_.push_back(raw);
+  stages_.add(part.get());
   parts_.push_back(std::move(part));
+  if (implicit_) implicit_->configure(model_, stages_);
 }
 
 void Rod::state_changed() {
   compute_strains(model_, state_);
   finite_ = state_is_finite();
+  if (implicit_) implicit_->reset_history();
 }
 
 void Rod::save_state(SnapshotWriter& out) const {
@@ -56,6 +55,7 @@ void Rod::save_state(SnapshotWriter& out) const {
   out.put(state_.time);
   out.put(finite_);
   for (const auto& part : parts_) part->save_state(out);
+  if (implicit_) implicit_->save_state(out);
 }
 
 void Rod::load_state(SnapshotReader& in) {
@@ -89,6 +89,7 @@ void Rod::load_state_unchecked(SnapshotReader& in) {
   state_.time = in.get_double();
   const bool finite = in.get_bool();
   for (const auto& part : parts_) part->load_state(in);
+  if (implicit_) implicit_->load_state(in);
   compute_strains(model_, state_);
   finite_ = finite;
 }
@@ -103,6 +104,7 @@ bool Rod::state_is_finite() const {
 bool Rod::advance(int steps) {
   if (!finite_) return false;
   if (steps <= 0) return true;
+  if (implicit_) return advance_implicitly(steps, model_.time_step);
   // Position Verlet (Gazzola et al. 2018, §3.3), per step: half kinematic step, constraints,
   // loads, dynamic step, rate constraints and damping, half kinematic step, constraints.
   // Between two steps the second half of one and the first half of the next use the same
@@ -111,30 +113,77 @@ bool Rod::advance(int steps) {
   kinematic_step(0.5 * dt);
   for (int s = 0; s < steps; ++s) {
     state_.time += 0.5 * dt;
-    for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
+    for (RodPart* part : stages_.constrain_values) part->constrain_values(model_, state_);
     dynamic_stage();
     const bool last = s + 1 == steps;
     kinematic_step(last ? 0.5 * dt : dt);
     state_.time += 0.5 * dt;
   }
-  for (RodPart* part : constrain_values_) part->constrain_values(model_, state_);
+  for (RodPart* part : stages_.constrain_values) part->constrain_values(model_, state_);
   // Read-outs (strains, energies, radii) describe the configuration at the end of the call.
   compute_strains(model_, state_);
   finite_ = state_is_finite();
   return finite_;
 }
 
+bool Rod::advance_by(double duration, int steps) {
+  if (!implicit_) {
+    throw Error("a position-Verlet rod steps at its fixed time_step; use advance(steps)",
+                "Rod::advance_by");
+  }
+  if (!(std::isfinite(duration) && duration > 0.0) || steps < 1) {
+    throw Error("need a finite, positive duration and at least one step, got " +
+                    std::to_string(duration) + " s in " + std::to_string(steps),
+                "Rod::advance_by");
+  }
+  if (!finite_) return false;
+  return advance_implicitly(steps, duration / steps);
+}
+
+bool Rod::advance_implicitly(int steps, double step) {
+  // A state made non-finite from outside is reported as by position Verlet, not as a failure
+  // of Newton's method.
+  if (!state_is_finite()) {
+    finite_ = false;
+    return false;
+  }
+  for (int s = 0; s < steps; ++s) implicit_step(step, 0);
+  compute_strains(model_, state_);
+  finite_ = state_is_finite();
+  return finite_;
+}
+
+void Rod::implicit_step(double step, int halvings) {
+  try {
+    implicit_->step(model_, state_, stages_, step);
+  } catch (const NewtonFailure& failure) {
+    const int most = implicit_->newton().max_halvings;
+    if (halvings < most) {
+      implicit_->count_halving();
+      implicit_step(0.5 * step, halvings + 1);
+      implicit_step(0.5 * step, halvings + 1);
+      return;
+    }
+    throw NewtonFailure(
+        failure.what_wrong() +
+            (most > 0 ? " (the step halved " + std::to_string(most) + " times)" : std::string()) +
+            ". Take a smaller time step, or raise newton.max_iterations",
+        failure.where());
+  }
+}
+
 // Loads at the mid-step configuration, then velocities and angular velocities.
 void Rod::dynamic_stage() {
+  for (RodPart* part : stages_.start_step) part->start_step(model_, state_, model_.time_step);
   compute_internal_loads(model_, state_);
   state_.external_forces.setZero();
   state_.external_torques.setZero();
-  for (RodPart* part : loads_) part->add_loads(model_, state_);
-  for (RodPart* part : contact_) part->add_contact_loads(model_, state_);
+  for (RodPart* part : stages_.loads) part->add_loads(model_, state_);
+  for (RodPart* part : stages_.contact) part->add_contact_loads(model_, state_);
 
   dynamic_step(model_.time_step);
-  for (RodPart* part : constrain_rates_) part->constrain_rates(model_, state_);
-  for (RodPart* part : damp_rates_) part->damp_rates(model_, state_);
+  for (RodPart* part : stages_.constrain_rates) part->constrain_rates(model_, state_);
+  for (RodPart* part : stages_.damp_rates) part->damp_rates(model_, state_);
 }
 
 void Rod::kinematic_step(double h) {

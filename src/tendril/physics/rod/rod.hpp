@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "tendril/physics/rod/implicit_stepper.hpp"
 #include "tendril/physics/rod/rod_model.hpp"
 #include "tendril/physics/rod/rod_part.hpp"
 #include "tendril/physics/rod/rod_spec.hpp"
@@ -24,9 +25,10 @@ struct RodEnergies {
   }
 };
 
-// A discrete Cosserat rod (Gazzola et al. 2018) assembled from parts and advanced by position
-// Verlet with a fixed time step. Parameters (RodModel) are immutable after construction; the
-// state (RodState) is sized once. Parts are attached declaratively:
+// A discrete Cosserat rod (Gazzola et al. 2018) assembled from parts and advanced with a fixed
+// time step by position Verlet or, as RodSpec::integrator chooses, implicitly (backward Euler or
+// BDF2 with Newton's method; ImplicitStepper). Parameters (RodModel) are immutable after
+// construction; the state (RodState) is sized once. Parts are attached declaratively:
 //
 //   Rod arm(spec);
 //   arm.add<FixedEnd>();
@@ -57,8 +59,13 @@ class Rod {
   void attach(std::unique_ptr<RodPart> part);
 
   // Advances `steps` time steps. Returns false if the state became non-finite (NaN or ∞); the
-  // rod then stops advancing and keeps returning false until its state is set anew.
+  // rod then stops advancing and keeps returning false until its state is set anew. An implicit
+  // step whose Newton iteration fails even in halves (NewtonSettings::max_halvings) raises
+  // tendril::Error (NewtonFailure), the rod back at that step's start.
   [[nodiscard]] bool advance(int steps = 1);
+  // Implicit rods only: advances `duration` seconds in `steps` equal steps (each of any length,
+  // e.g. to land exactly on a sensor's sampling time). Raises Error for a position-Verlet rod.
+  [[nodiscard]] bool advance_by(double duration, int steps);
   bool state_is_finite() const;
 
   const RodModel& model() const { return model_; }
@@ -68,8 +75,9 @@ class Rod {
   RodState& mutable_state() { return state_; }
   void state_changed();
 
-  // The whole evolving state — configuration, rates, time, the finite flag and every part's
-  // own state, in attachment order — so that advancing after load_state repeats advancing
+  // The whole evolving state — configuration, rates, time, the finite flag, every part's own
+  // state in attachment order and, for BDF2, the previous step — so that advancing after
+  // load_state repeats advancing
   // after save_state bit for bit. load_state raises Error on a snapshot of a rod of another
   // size or with other parts, and then leaves the rod as it was.
   void save_state(SnapshotWriter& out) const;
@@ -77,6 +85,12 @@ class Rod {
 
   double time() const { return state_.time; }
   double time_step() const { return model_.time_step; }
+  RodIntegrator integrator() const { return integrator_; }
+  bool is_implicit() const { return implicit_ != nullptr; }
+  // Newton's work so far (zero for position Verlet).
+  NewtonStatistics newton_statistics() const {
+    return implicit_ ? implicit_->statistics() : NewtonStatistics{};
+  }
   int n_elements() const { return model_.n_elements; }
 
   // Read-outs (lab frame unless stated).
@@ -98,13 +112,17 @@ class Rod {
   void kinematic_step(double h);  // x += h v;  Q ← exp(−h [ω]×) Q
   void dynamic_stage();
   void dynamic_step(double dt);
+  bool advance_implicitly(int steps, double step);
+  void implicit_step(double step, int halvings);
   void load_state_unchecked(SnapshotReader& in);
 
   RodModel model_;
   RodState state_;
+  RodIntegrator integrator_;
   std::vector<std::unique_ptr<RodPart>> parts_;
   // Parts by stage, so the stepper calls only the hooks a part uses.
-  std::vector<RodPart*> constrain_values_, loads_, contact_, constrain_rates_, damp_rates_;
+  PartsByStage stages_;
+  std::unique_ptr<ImplicitStepper> implicit_;  // null for position Verlet
   bool finite_ = true;
 };
 

@@ -46,6 +46,38 @@ void RodSpec::validate() const {
     throw Error("tip_mass must be finite and non-negative, got " + std::to_string(tip_mass),
                 "RodSpec");
   }
+  require_positive(newton.tolerance, "newton.tolerance");
+  if (newton.max_halvings < 0 || newton.max_halvings > 20) {
+    throw Error(
+        "newton.max_halvings must lie in [0, 20], got " + std::to_string(newton.max_halvings),
+        "RodSpec");
+  }
+  if (newton.max_iterations < 1) {
+    throw Error(
+        "newton.max_iterations must be at least 1, got " + std::to_string(newton.max_iterations),
+        "RodSpec");
+  }
+}
+
+const char* integrator_name(RodIntegrator integrator) {
+  switch (integrator) {
+    case RodIntegrator::kPositionVerlet:
+      return "verlet";
+    case RodIntegrator::kBackwardEuler:
+      return "backward_euler";
+    case RodIntegrator::kBdf2:
+      return "bdf2";
+  }
+  return "?";
+}
+
+RodIntegrator parse_integrator(const std::string& name) {
+  for (RodIntegrator integrator :
+       {RodIntegrator::kPositionVerlet, RodIntegrator::kBackwardEuler, RodIntegrator::kBdf2}) {
+    if (name == integrator_name(integrator)) return integrator;
+  }
+  throw Error("unknown integrator '" + name + "' (expected verlet, backward_euler or bdf2)",
+              "RodSpec");
 }
 
 }  // namespace tendril::physics

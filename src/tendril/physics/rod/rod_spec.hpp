@@ -5,6 +5,32 @@
 
 namespace tendril::physics {
 
+// How a rod advances in time.
+enum class RodIntegrator {
+  // Position Verlet (Gazzola et al. 2018, §3.3): explicit, second order, symplectic; stable
+  // only below the period of the rod's fastest mode (shear against rotation).
+  kPositionVerlet,
+  // Backward Euler with Newton's method on the rod's Jacobian: first order, unconditionally
+  // stable, damps a mode of angular frequency ω by 1/√(1 + (ωh)²) per step.
+  kBackwardEuler,
+  // Two-step backward differentiation (BDF2), its first step backward Euler: second order,
+  // unconditionally stable, far less numerical damping of the slow modes than backward Euler.
+  kBdf2,
+};
+
+// Newton's method of the implicit integrators (ImplicitStepper).
+struct NewtonSettings {
+  // Converged when the configuration's change still to come, estimated from the contraction of
+  // the last updates, is below this: node displacements relative to the rod's length and
+  // element rotations in radians.
+  double tolerance = 1e-9;
+  int max_iterations = 30;
+  // A step whose iteration fails (max_iterations, no contraction, a singular matrix) is taken
+  // again as two steps of half its length, down to 2^−max_halvings of it; beyond that (or with
+  // 0) the failure raises tendril::Error. Halvings are counted (NewtonStatistics).
+  int max_halvings = 4;
+};
+
 // What a user specifies to build a straight Cosserat rod (SI units, lab frame). Validated by
 // `validate()` when a rod is built: a bad value raises tendril::Error naming the field.
 struct RodSpec {
@@ -31,7 +57,11 @@ struct RodSpec {
   // inertia of a slender rod hardly affects its bending (a correction of order (r/L)²), so
   // scaling it up is the usual way to afford a larger step. 1: the physical inertia.
   double rotary_inertia_scale = 1.0;
-  double time_step = 2.0e-4;  // s, fixed for the rod's lifetime (position Verlet)
+  // s, fixed for the rod's lifetime; implicit rods may also take steps of other lengths
+  // (Rod::advance_by).
+  double time_step = 2.0e-4;
+  RodIntegrator integrator = RodIntegrator::kPositionVerlet;
+  NewtonSettings newton;  // implicit integrators only
 
   // Raises tendril::Error("<field> must be ...", "RodSpec") for the first invalid field.
   void validate() const;
@@ -39,6 +69,10 @@ struct RodSpec {
 
 // The shear modulus of an isotropic material with Poisson ratio ν: E / (2 (1 + ν)). The
 // Elastica arm uses E / (1 + 0.5), i.e. this formula's doubled form; see RodSpec::shear_modulus.
+// "verlet", "backward_euler", "bdf2" and back; parsing raises tendril::Error naming the value.
+const char* integrator_name(RodIntegrator integrator);
+RodIntegrator parse_integrator(const std::string& name);
+
 inline double shear_modulus_from_poisson(double youngs_modulus, double poisson_ratio) {
   return youngs_modulus / (2.0 * (1.0 + poisson_ratio));
 }

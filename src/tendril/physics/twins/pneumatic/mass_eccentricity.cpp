@@ -4,6 +4,8 @@
 #include <string>
 
 #include "tendril/core/error.hpp"
+#include "tendril/physics/rod/rod_jacobian.hpp"
+#include "tendril/physics/rod/rotation.hpp"
 
 namespace tendril::physics::pneumatic {
 
@@ -27,6 +29,16 @@ void MassEccentricity::add_loads(const RodModel& model, RodState& state) {
     const Eigen::Vector3d weight = state.director(i) * (masses_[i] * gravity_);
     const Eigen::Vector3d offset(offsets_(0, i), offsets_(1, i), 0.0);
     state.external_torques.col(i) += offset.cross(weight);
+  }
+}
+
+void MassEccentricity::add_load_derivatives(const RodModel& model, const RodState& state,
+                                            RodJacobian& jacobian) const {
+  for (int i = 0; i < model.n_elements; ++i) {
+    const Eigen::Vector3d weight = state.director(i) * (masses_[i] * gravity_);
+    const Eigen::Vector3d offset(offsets_(0, i), offsets_(1, i), 0.0);
+    const int self = RodJacobian::element(i);
+    jacobian.add_stiffness(self, self, skew(offset) * skew(weight));
   }
 }
 

@@ -18,6 +18,9 @@ class MassEccentricity final : public RodPart {
   uint32_t stages() const override { return kLoads; }
   void attach(const RodModel& model, const RodState& state) override;
   void add_loads(const RodModel& model, RodState& state) override;
+  // e × (Q w) changes with the element's rotation as [e]× [Q w]× δθ.
+  void add_load_derivatives(const RodModel& model, const RodState& state,
+                            RodJacobian& jacobian) const override;
 
  private:
   Vectors offsets_;

@@ -64,8 +64,8 @@ void PneumaticModules::vent() {
   hysteresis_.reset();
 }
 
-void PneumaticModules::add_loads(const RodModel& model, RodState& state) {
-  regulators_.advance(model.time_step);
+void PneumaticModules::start_step(const RodModel&, RodState&, double step) {
+  regulators_.advance(step);
   const ChamberVector& effective = hysteresis_.update(regulators_.pressures());
 
   Eigen::Matrix<double, 2, kModules> module_curvature = bias_;
@@ -96,7 +96,15 @@ void PneumaticModules::add_loads(const RodModel& model, RodState& state) {
       }
     }
   }
+}
+
+void PneumaticModules::add_loads(const RodModel& model, RodState& state) {
   loads_.add(model, state, stretch_, curvature_);
+}
+
+void PneumaticModules::add_load_derivatives(const RodModel& model, const RodState& state,
+                                            RodJacobian& jacobian) const {
+  loads_.add_derivatives(model, state, jacobian);
 }
 
 void PneumaticModules::set_module_gains(const Eigen::Matrix<double, 1, kModules>& gains) {

@@ -49,14 +49,17 @@ struct ModuleActuationSpec {
 // modules' curvatures applies. The loads are exactly those of shifting the rest strains, so
 // they are self-equilibrated and do not depend on the number of elements.
 //
-// The regulators are advanced once per rod step, here, at the kLoads stage.
+// The regulators advance once per rod step (kStartStep), by the step's length.
 class PneumaticModules final : public RodPart {
  public:
   explicit PneumaticModules(const ModuleActuationSpec& spec);
 
-  uint32_t stages() const override { return kLoads; }
+  uint32_t stages() const override { return kStartStep | kLoads; }
   void attach(const RodModel& model, const RodState& state) override;
+  void start_step(const RodModel& model, RodState& state, double step) override;
   void add_loads(const RodModel& model, RodState& state) override;
+  void add_load_derivatives(const RodModel& model, const RodState& state,
+                            RodJacobian& jacobian) const override;
   void save_state(SnapshotWriter& out) const override;
   void load_state(SnapshotReader& in) override;
 

@@ -81,7 +81,7 @@ void SmaActuator::update_tension_laws() {
   }
 }
 
-void SmaActuator::add_loads(const RodModel& model, RodState& state) {
+void SmaActuator::start_step(const RodModel&, RodState& state, double) {
   if (state.time >= thermal_time_ + spec_.thermal_step) {
     while (state.time >= thermal_time_ + spec_.thermal_step) {
       advance_coils(spec_.thermal_step);
@@ -89,6 +89,9 @@ void SmaActuator::add_loads(const RodModel& model, RodState& state) {
     }
     update_tension_laws();
   }
+}
+
+void SmaActuator::add_loads(const RodModel& model, RodState& state) {
   tendons_.add_loads(model, state);
 }
 

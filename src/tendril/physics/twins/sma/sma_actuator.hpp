@@ -34,9 +34,14 @@ class SmaActuator final : public RodPart {
 
   explicit SmaActuator(const SmaActuatorSpec& spec);
 
-  uint32_t stages() const override { return kLoads; }
+  uint32_t stages() const override { return kStartStep | kLoads; }
   void attach(const RodModel& model, const RodState& state) override;
+  void start_step(const RodModel& model, RodState& state, double step) override;
   void add_loads(const RodModel& model, RodState& state) override;
+  void add_load_derivatives(const RodModel& model, const RodState& state,
+                            RodJacobian& jacobian) const override {
+    tendons_.add_load_derivatives(model, state, jacobian);
+  }
   void save_state(SnapshotWriter& out) const override;
   void load_state(SnapshotReader& in) override;
 
