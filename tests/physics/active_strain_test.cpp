@@ -13,21 +13,7 @@
 namespace tendril::physics {
 namespace {
 
-// A constant active strain, for the tests.
-class ConstantActiveStrain final : public RodPart {
- public:
-  ConstantActiveStrain(Vectors stretch, Vectors curvature)
-      : stretch_(std::move(stretch)), curvature_(std::move(curvature)) {}
-  uint32_t stages() const override { return kLoads; }
-  void attach(const RodModel& model, const RodState&) override { loads_.resize(model); }
-  void add_loads(const RodModel& model, RodState& state) override {
-    loads_.add(model, state, stretch_, curvature_);
-  }
-
- private:
-  Vectors stretch_, curvature_;
-  ActiveStrainLoads loads_;
-};
+using testing::ConstantActiveStrain;
 
 RodSpec soft_rod(int n) {
   RodSpec spec;

@@ -14,21 +14,8 @@
 namespace tendril::physics {
 namespace {
 
-constexpr double kBetaL = 1.8751040687;  // first root of 1 + cos βL cosh βL = 0
-
-// First clamped-free mode shape of an Euler–Bernoulli beam, and its slope.
-double mode_shape(double x, double beta) {
-  const double b = kBetaL;
-  const double sigma = (std::cosh(b) + std::cos(b)) / (std::sinh(b) + std::sin(b));
-  return std::cosh(beta * x) - std::cos(beta * x) -
-         sigma * (std::sinh(beta * x) - std::sin(beta * x));
-}
-double mode_slope(double x, double beta) {
-  const double b = kBetaL;
-  const double sigma = (std::cosh(b) + std::cos(b)) / (std::sinh(b) + std::sin(b));
-  return beta * (std::sinh(beta * x) + std::sin(beta * x) -
-                 sigma * (std::cosh(beta * x) - std::cos(beta * x)));
-}
+using testing::kBetaL;
+using testing::start_first_mode;
 
 // A slender clamped rod along x (d1 = y, d2 = z) set vibrating in its first mode: node
 // velocities V φ(x) along y and element rotation rates V φ'(x) about d2.
@@ -44,21 +31,6 @@ RodSpec slender_spec() {
   spec.normal = Eigen::Vector3d::UnitY();
   spec.time_step = 1.0e-4;
   return spec;
-}
-
-void start_first_mode(Rod& rod, double tip_speed) {
-  const double length = rod.model().rest_lengths.sum();
-  const double beta = kBetaL / length;
-  const double scale = tip_speed / mode_shape(length, beta);
-  RodState& state = rod.mutable_state();
-  for (int j = 0; j <= rod.n_elements(); ++j) {
-    state.velocities(1, j) = scale * mode_shape(state.positions(0, j), beta);
-  }
-  for (int i = 0; i < rod.n_elements(); ++i) {
-    const double middle = 0.5 * (state.positions(0, i) + state.positions(0, i + 1));
-    state.angular_velocities(1, i) = scale * mode_slope(middle, beta);
-  }
-  rod.state_changed();
 }
 
 TEST(RodDynamics, FirstNaturalFrequencyOfCantilever) {

@@ -22,9 +22,9 @@ namespace tendril::physics {
 namespace {
 
 using testing::add_uniform_damping;
+using testing::kBetaL;
 using testing::settle;
-
-constexpr double kBetaL = 1.8751040687;  // first root of 1 + cos βL cosh βL = 0
+using testing::start_first_mode;
 
 // A cantilever along x (d1 = y, d2 = z) whose first mode is ω₁ ≈ 7 rad/s.
 RodSpec cantilever(RodIntegrator integrator, double time_step) {
@@ -47,36 +47,6 @@ double euler_bernoulli_first_mode(const RodSpec& spec) {
   const double second_moment = area * area / (4.0 * std::numbers::pi);
   return std::pow(kBetaL / spec.length, 2) *
          std::sqrt(spec.youngs_modulus * second_moment / (spec.density * area));
-}
-
-// The first clamped-free mode of an Euler–Bernoulli beam and its slope, to start a rod
-// vibrating in (nearly) that mode alone.
-double mode_shape(double x, double beta) {
-  const double b = kBetaL;
-  const double sigma = (std::cosh(b) + std::cos(b)) / (std::sinh(b) + std::sin(b));
-  return std::cosh(beta * x) - std::cos(beta * x) -
-         sigma * (std::sinh(beta * x) - std::sin(beta * x));
-}
-double mode_slope(double x, double beta) {
-  const double b = kBetaL;
-  const double sigma = (std::cosh(b) + std::cos(b)) / (std::sinh(b) + std::sin(b));
-  return beta * (std::sinh(beta * x) + std::sin(beta * x) -
-                 sigma * (std::cosh(beta * x) - std::cos(beta * x)));
-}
-
-void start_first_mode(Rod& rod, double tip_speed) {
-  const double length = rod.model().rest_lengths.sum();
-  const double beta = kBetaL / length;
-  const double scale = tip_speed / mode_shape(length, beta);
-  RodState& state = rod.mutable_state();
-  for (int j = 0; j <= rod.n_elements(); ++j) {
-    state.velocities(1, j) = scale * mode_shape(state.positions(0, j), beta);
-  }
-  for (int i = 0; i < rod.n_elements(); ++i) {
-    const double middle = 0.5 * (state.positions(0, i) + state.positions(0, i + 1));
-    state.angular_velocities(1, i) = scale * mode_slope(middle, beta);
-  }
-  rod.state_changed();
 }
 
 struct Oscillation {

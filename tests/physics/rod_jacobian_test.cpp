@@ -11,6 +11,7 @@
 #include <numbers>
 #include <vector>
 
+#include "rod_test_support.hpp"
 #include "tendril/physics/contact/cylinder_contact.hpp"
 #include "tendril/physics/forcing/active_strain.hpp"
 #include "tendril/physics/forcing/loads.hpp"
@@ -26,25 +27,7 @@
 namespace tendril::physics {
 namespace {
 
-// A constant active strain (what the pneumatic chambers impose), for the tests.
-class ConstantActiveStrain final : public RodPart {
- public:
-  ConstantActiveStrain(Vectors stretch, Vectors curvature)
-      : stretch_(std::move(stretch)), curvature_(std::move(curvature)) {}
-  uint32_t stages() const override { return kLoads; }
-  void attach(const RodModel& model, const RodState&) override { loads_.resize(model); }
-  void add_loads(const RodModel& model, RodState& state) override {
-    loads_.add(model, state, stretch_, curvature_);
-  }
-  void add_load_derivatives(const RodModel& model, const RodState& state,
-                            RodJacobian& jacobian) const override {
-    loads_.add_derivatives(model, state, jacobian);
-  }
-
- private:
-  Vectors stretch_, curvature_;
-  ActiveStrainLoads loads_;
-};
+using testing::ConstantActiveStrain;
 
 // A rod with parts but no stepper of its own: the loads as one vector in RodJacobian's order
 // (forces on nodes, torques on elements), and the Newton matrix of a step of effective length h.
