@@ -90,11 +90,17 @@ std::vector<CommandSpec> command_table() {
                    "info values (a new file)."},
                   {"open-loop", "",
                    "Replay the actions the policy takes in one episode of the run's "
-                   "own environment on this one (seed 002, Fig. 7)."}},
+                   "own environment on this one (seed 002, Fig. 7)."},
+                  {"filter", "RUN|FILE.critic",
+                   "Act through the learned safety filter (seed 001 eq. 6.5) of a safety "
+                   "run's safety.critic: the policy's action where the critic's value is at "
+                   "above ε₂, the critic's safest action otherwise."},
+                  {"epsilon", "E", "The filter's threshold ε₂ (with --filter; `tendril safety "
+                                   "search` finds one)."}},
       .takes_set = true,
       .set_help = "Change the run's experiment for this, e.g. --set env.params.tip_mass=0.05: a "
                   "policy on conditions it was not trained on.",
-      .examples = {"tendril run runs/ppo_pendulum-20261127-101500 --episodes 20",
+      .examples = {"tendril run runs/ppo_pendulum-seed1-20261127-101500 --episodes 20",
                    "tendril run runs/limb_policy --set env.params.backend=bridge "
                    "--set env.params.bridge.port=/dev/ttyACM0 --filter runs/limb_safety "
                    "--epsilon 90",

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Every file of examples/, run as its README says, with short budgets, from a scratch directory
+# that sees the repository's configs/ and examples/: each must finish and write what it promises.
+#   run_examples.sh <source dir> <tendril program> <python package dir> <vendor dir> <scratch>
+set -u
+source=$1 tendril=$2 package=$3 vendor=$4 scratch=$5
+rm -rf "$scratch" && mkdir -p "$scratch" && cd "$scratch" || exit 1
+ln -s "$source/configs" configs
+ln -s "$source/examples" examples
+mkdir -p build/apps && ln -s "$tendril" build/apps/tendril
+export PYTHONPATH=$package${vendor:+:$vendor/gymnasium-0.29.1:$vendor/stable-baselines3-2.3.2}
+export MPLBACKEND=Agg
+failures=0
+step() {  # step <name> <expected output pattern> <command...>
+  local name=$1 pattern=$2
+  shift 2
+  echo "== $name"
+  if "$@" >"$name.log" 2>&1 && grep -q -- "$pattern" "$name.log"; then
+    grep -- "$pattern" "$name.log" | tail -2
+  else
+    echo "FAIL: $name: $(tail -5 "$name.log")"
+    failures=$((failures + 1))
+  fi
+}
+step sb3_soft_arm "wrote sb3_arm.png" /usr/bin/python3 examples/sb3_soft_arm.py 4096
+step train_then_python "wrote example_arm.mp4" /usr/bin/python3 examples/train_then_python.py 100000
+step seeds_sweep "seed" build/apps/tendril sweep run examples/seeds_sweep.yaml --no-figures --quiet
+step seeds_report "3 runs\|± " build/apps/tendril report runs/sweeps/example_seeds
+step filtered_deployment "through the safety filter at" bash examples/filtered_deployment.sh 3000
+for made in sb3_arm.png example_arm.mp4 runs/example_arm/model.policy runs/example_dubins/safety.critic; do
+  [ -s "$made" ] || { echo "FAIL: $made was not written"; failures=$((failures + 1)); }
+done
+[ $failures -eq 0 ] && echo "ok: every example"
+exit $failures
