@@ -52,22 +52,28 @@ int calibrate(const Config& config) {
   const fs::path curves = new_output(config, "curves");
   config.reject_unknown();
 
-  std::printf("tendril collect: calibrating the %s limb twin (holds %.1f s, cool-downs %.0f s)\n",
+  std::printf("tendril data calibrate: the %s limb twin (holds %.1f s, cool-downs %.0f s)\n",
               limb.c_str(), settings.hold_s, settings.cooldown_s);
+  std::fflush(stdout);
   const Stopwatch stopwatch;
   envs::sma_limb::TwinLimbRobot robot(spec);
+  // Each stage's result as it comes: a coil's sweep takes tens of seconds.
+  const auto report_stage = [](int coil, const envs::sma_limb::LimbCalibration& calibration) {
+    if (coil < 0) {
+      std::printf("zero offsets %.2f, %.2f deg; velocity noise floor %.2f deg/s\n",
+                  calibration.zero_offset_deg.x(), calibration.zero_offset_deg.y(),
+                  calibration.noise_floor_deg_s);
+    } else {
+      std::printf("coil %-5s lower PWM %3d (%4.1f %%)  upper PWM %3d (%4.1f %%)\n",
+                  envs::sma_limb::LimbCalibration::kCoilKeys[coil], calibration.lower_pwm[coil],
+                  100.0 * calibration.lower_pwm[coil] / 255.0, calibration.upper_pwm[coil],
+                  100.0 * calibration.upper_pwm[coil] / 255.0);
+    }
+    std::fflush(stdout);
+  };
   const envs::sma_limb::CalibrationResult result =
-      envs::sma_limb::calibrate(robot, settings, limb, seed);
+      envs::sma_limb::calibrate(robot, settings, limb, seed, report_stage);
   const envs::sma_limb::LimbCalibration& calibration = result.calibration;
-  std::printf("zero offsets %.2f, %.2f deg; velocity noise floor %.2f deg/s\n",
-              calibration.zero_offset_deg.x(), calibration.zero_offset_deg.y(),
-              calibration.noise_floor_deg_s);
-  for (int coil = 0; coil < 4; ++coil) {
-    std::printf("coil %-5s lower PWM %3d (%4.1f %%)  upper PWM %3d (%4.1f %%)\n",
-                envs::sma_limb::LimbCalibration::kCoilKeys[coil], calibration.lower_pwm[coil],
-                100.0 * calibration.lower_pwm[coil] / 255.0, calibration.upper_pwm[coil],
-                100.0 * calibration.upper_pwm[coil] / 255.0);
-  }
   stopwatch.report(result.robot_time_s);
   calibration.save(output);
 
@@ -125,7 +131,7 @@ int collect_data(const Config& config, const std::string& task) {
   const double window_s = config.get_or<double>("coverage_window_s", 600.0);
   config.reject_unknown();
 
-  std::printf("tendril collect: %s on the %s limb for %.0f s of robot time\n", task.c_str(),
+  std::printf("tendril data collect: %s on the %s limb for %.0f s of robot time\n", task.c_str(),
               limb.c_str(), settings.duration_s);
   const Stopwatch stopwatch;
   const LimbLog log = envs::sma_limb::collect(*env, *source, settings, seed);

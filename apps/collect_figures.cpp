@@ -1,4 +1,4 @@
-// The tasks of `tendril collect` behind the thesis' figures: open-loop replays after cool-downs
+// The tasks of `tendril data` behind the thesis' figures: open-loop replays after cool-downs
 // (Fig. 1.1c), exploration against babbling (Fig. 4.2) and the limb's response to the open-loop
 // test inputs (Fig. 4.4's ground truth).
 #include <cmath>
@@ -109,8 +109,8 @@ int replay(const Config& config) {
   const Observation observation_after = observation;
   const double time_after = now;
   double robot_time = now;
-  std::printf("tendril collect: replaying %zu segments (%.1f s) on the %s limb\n", segments.size(),
-              traces[0].time_s.back(), limb.c_str());
+  std::printf("tendril data replay: replaying %zu segments (%.1f s) on the %s limb\n",
+              segments.size(), traces[0].time_s.back(), limb.c_str());
   for (double cooldown : cooldowns) {
     SnapshotReader reader(after_original);
     env->load_state(reader);
@@ -225,7 +225,7 @@ int compare_coverage(const Config& config) {
   config.reject_unknown();
 
   std::printf(
-      "tendril collect: exploration against babbling on the %s limb, %.0f s each, "
+      "tendril data coverage: exploration against babbling on the %s limb, %.0f s each, "
       "seeds",
       limb.c_str(), settings.duration_s);
   for (int64_t seed : seeds) std::printf(" %lld", static_cast<long long>(seed));

@@ -12,7 +12,7 @@
 #include "tendril/envs/sma_limb/collect.hpp"
 #include "tendril/envs/sma_limb/visit_grid.hpp"
 
-// What the tasks of `tendril collect` share.
+// What the tasks of `tendril data` share.
 namespace tendril::apps::collect {
 
 // Robot time against the wall clock and the process's CPU time ("real time on one core").

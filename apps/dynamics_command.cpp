@@ -22,22 +22,21 @@ namespace {
 namespace fs = std::filesystem;
 using namespace tendril::dynamics;
 
-void print_evaluation(const std::vector<EvaluationRow>& rows) {
-  for (const EvaluationRow& row : rows) {
-    std::string label = row.metric == "one_step" ? "one-step" : "rollout";
-    if (row.metric != "one_step") {
-      char horizon[48];
-      std::snprintf(horizon, sizeof horizon, " %gs", row.horizon);
-      label += horizon;
-    }
-    std::printf("  %-16s", label.c_str());
-    for (std::size_t g = 0; g < row.errors.groups.size(); ++g) {
-      std::printf("  RMSE %s %.4g %s", row.errors.groups[g].name.c_str(), row.errors.rmse[g],
-                  row.errors.groups[g].unit.c_str());
-    }
-    std::printf("  (%lld points, %lld starts)\n", static_cast<long long>(row.errors.points),
-                static_cast<long long>(row.errors.rollouts));
+void print_row(const EvaluationRow& row) {
+  std::string label = row.metric == "one_step" ? "one-step" : "rollout";
+  if (row.metric != "one_step") {
+    char horizon[48];
+    std::snprintf(horizon, sizeof horizon, " %gs", row.horizon);
+    label += horizon;
   }
+  std::printf("  %-16s", label.c_str());
+  for (std::size_t g = 0; g < row.errors.groups.size(); ++g) {
+    std::printf("  RMSE %s %.4g %s", row.errors.groups[g].name.c_str(), row.errors.rmse[g],
+                row.errors.groups[g].unit.c_str());
+  }
+  std::printf("  (%lld points, %lld starts)\n", static_cast<long long>(row.errors.points),
+              static_cast<long long>(row.errors.rollouts));
+  std::fflush(stdout);
 }
 
 }  // namespace
@@ -68,7 +67,7 @@ int model_fit_command(const Arguments& line) {
   std::printf("best validation loss %.6g at epoch %d\n", t.best_validation_loss, t.best_epoch);
   if (!result.evaluation.empty()) {
     std::printf("test split:\n");
-    print_evaluation(result.evaluation);
+    for (const EvaluationRow& row : result.evaluation) print_row(row);
   }
   std::printf("model:          %s\n", (run / kModelFileName).string().c_str());
   std::printf("learning curve: %s/progress.csv (TensorBoard: %s)\n", run.string().c_str(),
@@ -143,8 +142,9 @@ int model_eval_command(const Arguments& line) {
               model_file_path(line.positional[0]).string().c_str(),
               architecture_name(model->spec().kind).c_str(), model->spec().window,
               split_name.c_str(), line.positional[1].c_str());
-  const std::vector<EvaluationRow> rows = evaluate_model(*model, data, split, horizons, max_gap);
-  print_evaluation(rows);
+  // Each row as soon as it is measured: the rollouts of long horizons take a while.
+  const std::vector<EvaluationRow> rows =
+      evaluate_model(*model, data, split, horizons, max_gap, print_row);
   if (line.has("output")) {
     write_evaluation_csv(rows, line.value("output", ""));
     std::printf("errors -> %s\n", line.value("output", "").c_str());

@@ -6,7 +6,7 @@
 
 namespace tendril::data {
 
-// A data set collected on the SMA limb (seed 001, §4.2.3; `tendril collect`): one row per
+// A data set collected on the SMA limb (seed 001, §4.2.3; `tendril data collect`): one row per
 // bend-sensor reading — its time stamp, the two angles (zero offsets removed) and what drove the
 // limb from that reading to the next: the integer throttles commanded and the four PWM values
 // the firmware applied (zero while its 100° cut-off held the coils off).

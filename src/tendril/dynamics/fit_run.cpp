@@ -87,12 +87,15 @@ FitExperiment FitExperiment::from_config(Config config) {
 }
 
 std::vector<EvaluationRow> evaluate_model(Model& model, const SequenceData& data, Split split,
-                                          const std::vector<double>& horizons, double max_gap) {
+                                          const std::vector<double>& horizons, double max_gap,
+                                          const std::function<void(const EvaluationRow&)>& on_row) {
   std::vector<EvaluationRow> rows;
   const WindowSet windows(data, model, max_gap);
   rows.push_back({"one_step", 0.0, one_step_errors(model, windows, split)});
+  if (on_row) on_row(rows.back());
   for (double horizon : horizons) {
     rows.push_back({"rollout", horizon, rollout_errors(model, data, split, horizon, max_gap)});
+    if (on_row) on_row(rows.back());
   }
   return rows;
 }
@@ -151,6 +154,12 @@ FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool qu
   // Zero epochs (evaluating a model to fine-tune as it is) still leave a model file.
   if (!fs::exists(model_file)) save_model(*model, model_file);
   if (!windows.ends(Split::kTest).empty()) {
+    if (!quiet) {
+      std::fprintf(stderr,
+                   "evaluating the model on the test split: one-step errors and %zu "
+                   "rollout horizons...\n",
+                   e.horizons.size());
+    }
     result.evaluation = evaluate_model(*model, data, Split::kTest, e.horizons, max_gap);
     write_evaluation_csv(result.evaluation, run_directory / "evaluation.csv");
   }

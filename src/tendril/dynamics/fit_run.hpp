@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,9 +66,11 @@ struct FitResult {
 FitResult run_fit(const FitExperiment& experiment, const std::filesystem::path& run_directory,
                   bool quiet = false);
 
-// One-step errors and rollouts of every horizon on `split` of `data` (rows in the order given).
-std::vector<EvaluationRow> evaluate_model(Model& model, const SequenceData& data, Split split,
-                                          const std::vector<double>& horizons, double max_gap);
+// One-step errors and rollouts of every horizon on `split` of `data` (rows in the order given);
+// `on_row`, if given, sees each row as soon as it is measured (long rollouts take a while).
+std::vector<EvaluationRow> evaluate_model(
+    Model& model, const SequenceData& data, Split split, const std::vector<double>& horizons,
+    double max_gap, const std::function<void(const EvaluationRow&)>& on_row = {});
 
 // Writes rows as CSV (metric,horizon_s,group,unit,rmse,points,rollouts), atomically; raises
 // Error if `file` exists.

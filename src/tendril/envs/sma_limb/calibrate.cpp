@@ -111,17 +111,20 @@ std::array<int, 2> sweep_coil(LimbRobot& robot, int coil, const CalibrationSetti
   return {lower > 0 ? lower : upper, upper};
 }
 
-CalibrationResult calibrate(LimbRobot& robot, const CalibrationSettings& settings,
-                            const std::string& limb, uint64_t seed) {
+CalibrationResult calibrate(
+    LimbRobot& robot, const CalibrationSettings& settings, const std::string& limb, uint64_t seed,
+    const std::function<void(int coil, const LimbCalibration& calibration)>& on_stage) {
   CalibrationResult result;
   result.calibration.limb = limb;
   LimbSample sample;
   measure_rest(robot, settings, seed, result.calibration, sample);
+  if (on_stage) on_stage(-1, result.calibration);
   for (int coil = 0; coil < 4; ++coil) {
     const std::array<int, 2> bounds =
         sweep_coil(robot, coil, settings, result.calibration, sample, result.holds);
     result.calibration.lower_pwm[coil] = bounds[0];
     result.calibration.upper_pwm[coil] = bounds[1];
+    if (on_stage) on_stage(coil, result.calibration);
   }
   result.robot_time_s = sample.time_s;
   result.calibration.validate("calibrate");

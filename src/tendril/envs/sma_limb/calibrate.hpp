@@ -54,9 +54,11 @@ struct CalibrationResult {
 
 // Calibrates `robot` (reset with `seed` first): measure_rest, then sweep_coil for each coil.
 // Raises Error if a coil never reaches the threshold below max_pwm. `limb` names the limb in the
-// result.
-CalibrationResult calibrate(LimbRobot& robot, const CalibrationSettings& settings,
-                            const std::string& limb, uint64_t seed);
+// result. `on_stage`, if given, sees the calibration after each stage (coil −1: the rest
+// measured; 0–3: that coil swept), as the stages take a while on a robot or its twin.
+CalibrationResult calibrate(
+    LimbRobot& robot, const CalibrationSettings& settings, const std::string& limb, uint64_t seed,
+    const std::function<void(int coil, const LimbCalibration& calibration)>& on_stage = {});
 
 // The two stages of calibrate. measure_rest resets the robot and fills the zero offsets and the
 // noise floor of `calibration`; sweep_coil sweeps one coil from the robot's state after `sample`
