@@ -12,6 +12,9 @@ namespace {
 TEST(SafetyReward, LevelIsTheNormalizedMargin) {
   EXPECT_DOUBLE_EQ(SafetyReward::level(0.5, 2.0), 0.25);
   EXPECT_DOUBLE_EQ(SafetyReward::level(2.0, 2.0), 1.0);
+  // Eq. 6.4 caps l(x) at 1: a state farther from the unsafe set than the largest margin the
+  // normalization names is worth no more than one at that margin.
+  EXPECT_DOUBLE_EQ(SafetyReward::level(5.0, 2.0), 1.0);
   EXPECT_THROW(SafetyReward::level(0.5, 0.0), Error);
 }
 
