@@ -51,8 +51,11 @@ std::vector<CommandSpec> command_table() {
       .min_positionals = 1,
       .max_positionals = 1,
       .summary = "Continue a paused or interrupted run from its newest intact checkpoint.",
-      .description = "The resumed run computes what the uninterrupted run computes (off-policy "
-                     "runs: with save_replay_buffer: true); its config.yaml is used as saved.",
+      .description =
+          "The resumed run computes what the uninterrupted run computes (off-policy runs: with "
+          "save_replay_buffer: true); its config.yaml is used as saved. A model fit stopped by "
+          "Ctrl-C or SIGTERM (its fit.ckpt) continues the same way, to the uninterrupted fit's "
+          "model and logs.",
       .options = {{"stop-at", "STEPS", "Pause again at the first checkpoint at or past STEPS."},
                   {"quiet", "", "No progress line."}},
       .run = resume_command,
@@ -95,8 +98,9 @@ std::vector<CommandSpec> command_table() {
                    "Act through the learned safety filter (seed 001 eq. 6.5) of a safety "
                    "run's safety.critic: the policy's action where the critic's value is at "
                    "above ε₂, the critic's safest action otherwise."},
-                  {"epsilon", "E", "The filter's threshold ε₂ (with --filter; `tendril safety "
-                                   "search` finds one)."}},
+                  {"epsilon", "E",
+                   "The filter's threshold ε₂ (with --filter; `tendril safety "
+                   "search` finds one)."}},
       .takes_set = true,
       .set_help = "Change the run's experiment for this, e.g. --set env.params.tip_mass=0.05: a "
                   "policy on conditions it was not trained on.",
@@ -270,7 +274,9 @@ std::vector<CommandSpec> command_table() {
       .summary = "Fit a learned dynamics model to a prepared data set; write its run directory.",
       .description = "The run directory holds config.yaml, progress.csv (train/loss, "
                      "train/val_loss per epoch), TensorBoard events, model.tdm and "
-                     "evaluation.csv (one-step and rollout RMSE on the test split).",
+                     "evaluation.csv (one-step and rollout RMSE on the test split). Ctrl-C (or "
+                     "SIGTERM) stops at the end of the epoch with a checkpoint; `tendril resume "
+                     "RUN` continues exactly.",
       .options = {output("The run directory (default: the file's `output` plus a time stamp)."),
                   {"quiet", "", "No progress line."}},
       .takes_set = true,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "cli/arguments.hpp"
 #include "tendril/core/config.hpp"
 
@@ -21,6 +23,9 @@ int data_coverage_command(const Arguments& line);
 int data_open_loop_command(const Arguments& line);
 int data_prepare_command(const Arguments& line);
 int model_fit_command(const Arguments& line);
+// `tendril resume RUN` of a model fit stopped with a checkpoint: the exit status, or nothing
+// when RUN holds no such fit (dynamics layer).
+std::optional<int> resume_stopped_fit(const Arguments& line);
 int model_eval_command(const Arguments& line);
 int safety_eval_command(const Arguments& line);
 int safety_search_command(const Arguments& line);

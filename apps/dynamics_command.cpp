@@ -2,12 +2,14 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 #include "tendril/dynamics/fit_run.hpp"
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
@@ -39,6 +41,32 @@ void print_row(const EvaluationRow& row) {
   std::fflush(stdout);
 }
 
+// What a fit (or a continued one) did; 128 + the signal when one stopped it.
+int report_fit(const FitResult& result) {
+  const TrainingReport& t = result.training;
+  const std::string run = result.run_directory.string();
+  std::printf(
+      "%d epochs in %.1f s (%.0f windows/s), %lld parameters, %lld train / %lld "
+      "validation windows%s\n",
+      t.epochs_run, t.seconds, t.windows_per_second, static_cast<long long>(result.parameters),
+      static_cast<long long>(t.train_windows), static_cast<long long>(t.validation_windows),
+      t.stopped_early ? " (stopped early)" : "");
+  std::printf("best validation loss %.6g at epoch %d\n", t.best_validation_loss, t.best_epoch);
+  if (t.interrupted != 0) {
+    std::printf("interrupted by %s; a checkpoint after epoch %d holds the fit\n",
+                signal_name(t.interrupted), t.epochs_run);
+    std::printf("continue with:  tendril resume %s\n", run.c_str());
+    return 128 + t.interrupted;
+  }
+  if (!result.evaluation.empty()) {
+    std::printf("test split:\n");
+    for (const EvaluationRow& row : result.evaluation) print_row(row);
+  }
+  std::printf("model:          %s/%s\n", run.c_str(), kModelFileName);
+  std::printf("learning curve: %s/progress.csv (TensorBoard: %s)\n", run.c_str(), run.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int model_fit_command(const Arguments& line) {
@@ -56,23 +84,24 @@ int model_fit_command(const Arguments& line) {
               experiment.data_file.string().c_str(), experiment.training.epochs,
               static_cast<unsigned long long>(experiment.seed), run.string().c_str());
   std::fflush(stdout);
-  const FitResult result = run_fit(experiment, run, line.has("quiet"));
-  const TrainingReport& t = result.training;
-  std::printf(
-      "%d epochs in %.1f s (%.0f windows/s), %lld parameters, %lld train / %lld "
-      "validation windows%s\n",
-      t.epochs_run, t.seconds, t.windows_per_second, static_cast<long long>(result.parameters),
-      static_cast<long long>(t.train_windows), static_cast<long long>(t.validation_windows),
-      t.stopped_early ? " (stopped early)" : "");
-  std::printf("best validation loss %.6g at epoch %d\n", t.best_validation_loss, t.best_epoch);
-  if (!result.evaluation.empty()) {
-    std::printf("test split:\n");
-    for (const EvaluationRow& row : result.evaluation) print_row(row);
+  catch_interrupts();  // Ctrl-C: a checkpoint at the end of the epoch; `tendril resume` continues
+  return report_fit(run_fit(experiment, run, line.has("quiet")));
+}
+
+std::optional<int> resume_stopped_fit(const Arguments& line) {
+  const fs::path run = line.positional.front();
+  if (!is_stopped_fit(run)) {
+    require(!fs::exists(run / kModelFileName),
+            "a model fit with nothing to continue: it finished, or was killed without the polite "
+            "stop that writes a checkpoint (fit it again)",
+            run.string());
+    return std::nullopt;
   }
-  std::printf("model:          %s\n", (run / kModelFileName).string().c_str());
-  std::printf("learning curve: %s/progress.csv (TensorBoard: %s)\n", run.string().c_str(),
-              run.string().c_str());
-  return 0;
+  if (line.has("stop-at")) throw UsageError("--stop-at counts training steps: a fit has none");
+  std::printf("continuing the fit in %s\n", run.string().c_str());
+  std::fflush(stdout);
+  catch_interrupts();
+  return report_fit(resume_fit(run, line.has("quiet")));
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <optional>
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
@@ -54,6 +55,9 @@ int report(const rl::TrainResult& result) {
 
 int resume_command(const Arguments& line) {
   const std::filesystem::path run = line.positional.front();
+#ifdef TENDRIL_WITH_DYNAMICS
+  if (const std::optional<int> status = resume_stopped_fit(line)) return *status;
+#endif
   if (std::filesystem::exists(run / "config.yaml")) {
     const Config config = Config::load_file(run / "config.yaml");
     require(!config.has("safety") && !config.has("constrained"),

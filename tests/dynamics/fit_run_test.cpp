@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
 #include "synthetic_limb.hpp"
+#include "tendril/core/interrupt.hpp"
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
@@ -136,6 +139,66 @@ TEST_F(FitRun, SameConfigAndSeedGiveTheSameModelFile) {
   other_seed.set("seed", "5");
   run_fit(FitExperiment::from_config(other_seed), directory_ / "c", true);
   EXPECT_NE(bytes(directory_ / "a" / "model.tdm"), bytes(directory_ / "c" / "model.tdm"));
+}
+
+std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// progress.csv without its wall-time columns (time/fps, time/time_elapsed).
+std::string progress_without_times(const std::filesystem::path& run) {
+  std::istringstream lines(file_text(run / "progress.csv"));
+  std::string header;
+  std::getline(lines, header);
+  std::vector<bool> keep;
+  std::stringstream names(header);
+  for (std::string name; std::getline(names, name, ',');) {
+    keep.push_back(name != "time/fps" && name != "time/time_elapsed");
+  }
+  std::string kept;
+  const auto keep_cells = [&](const std::string& row) {
+    std::stringstream cells(row);
+    std::size_t column = 0;
+    for (std::string cell; std::getline(cells, cell, ','); ++column) {
+      if (column < keep.size() && keep[column]) kept += cell + ",";
+    }
+    kept += "\n";
+  };
+  keep_cells(header);
+  for (std::string row; std::getline(lines, row);) keep_cells(row);
+  return kept;
+}
+
+// A fit stopped by Ctrl-C at an epoch's end and continued by resume_fit leaves the files of the
+// uninterrupted fit: the same model bytes, the same rows, the same evaluation.
+TEST_F(FitRun, AStoppedFitResumesToTheUninterruptedFilesExactly) {
+  const FitExperiment experiment = FitExperiment::from_config(
+      config("model: {architecture: lstm, hidden_size: 8, layers: 1, window: 10}\n"
+             "training: {epochs: 4, batch_size: 64}\n"
+             "evaluation: {horizons_s: [2]}\nseed: 6\n"));
+  const auto whole = directory_ / "whole", stopped = directory_ / "stopped";
+  run_fit(experiment, whole, true);
+
+  request_interrupt(SIGINT);  // seen at the end of the first epoch
+  const FitResult first = run_fit(experiment, stopped, true);
+  clear_interrupt();
+  EXPECT_EQ(first.training.interrupted, SIGINT);
+  EXPECT_EQ(first.training.epochs_run, 1);
+  EXPECT_TRUE(is_stopped_fit(stopped));
+  EXPECT_FALSE(std::filesystem::exists(stopped / "evaluation.csv"));
+
+  const FitResult rest = resume_fit(stopped, true);
+  EXPECT_EQ(rest.training.interrupted, 0);
+  EXPECT_EQ(rest.training.epochs_run, 4);
+  EXPECT_FALSE(is_stopped_fit(stopped));
+  EXPECT_EQ(file_text(stopped / "model.tdm"), file_text(whole / "model.tdm"));
+  EXPECT_EQ(file_text(stopped / "evaluation.csv"), file_text(whole / "evaluation.csv"));
+  EXPECT_EQ(progress_without_times(stopped), progress_without_times(whole));
+
+  // A finished fit has nothing to continue.
+  EXPECT_NE(error_message([&] { resume_fit(whole, true); }).find("has no fit checkpoint"),
+            std::string::npos);
 }
 
 TEST(FitConfigs, EveryShippedConfigReads) {

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <limits>
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
@@ -10,6 +11,7 @@
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
 #include "tendril/dynamics/torch_threads.hpp"
+#include "tendril/dynamics/trainer.hpp"
 #include "tendril/dynamics/window_set.hpp"
 
 namespace tendril::dynamics {
@@ -113,10 +115,13 @@ void write_evaluation_csv(const std::vector<EvaluationRow>& rows, const fs::path
   write_file_atomically(file, out, "evaluation");
 }
 
-FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool quiet) {
+namespace {
+
+// A fit into `run_directory`: a new one, or (resuming) the continuation of the one its
+// checkpoint holds.
+FitResult fit(const FitExperiment& e, const fs::path& run_directory, bool quiet, bool resuming) {
   dynamics::use_one_torch_thread();
-  require(!fs::exists(run_directory) || fs::is_empty(run_directory),
-          "run directory exists and is not empty; nothing is overwritten", run_directory.string());
+  const fs::path checkpoint = run_directory / kFitCheckpointName;
   const SequenceData data = read_prepared_csv(e.data_file, e.columns);
   const double max_gap = segment_gap(data, e.max_gap);
   std::unique_ptr<Model> model = initial_model(e, data);
@@ -127,11 +132,20 @@ FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool qu
               data.describe_runs(Split::kTrain, model->spec().window + 1, max_gap),
           data.source);
 
-  fs::create_directories(run_directory);
+  if (!resuming) fs::create_directories(run_directory);
   // Held while fitting: the dashboard shows the fit as running while a process holds it.
   const RunLock lock(run_directory);
-  write_file_atomically(run_directory / "config.yaml", e.config.dump(), "config");
-  ScalarLog log(run_directory);
+  if (resuming) {
+    require(fs::exists(checkpoint),
+            "has no fit checkpoint to continue from (a fit writes one only when stopped by "
+            "Ctrl-C or SIGTERM; a finished fit has none)",
+            run_directory.string());
+  } else {
+    write_file_atomically(run_directory / "config.yaml", e.config.dump(), "config");
+  }
+  // Resuming drops log rows of epochs after the checkpoint (none, unless a kill came later).
+  ScalarLog log(run_directory, resuming,
+                resuming ? checkpoint_epochs(checkpoint) : std::numeric_limits<int64_t>::max());
   const fs::path model_file = run_directory / kModelFileName;
   FitResult result;
   result.run_directory = run_directory;
@@ -150,7 +164,9 @@ FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool qu
         log.dump(epoch.epoch);
         if (epoch.improved) save_model(*model, model_file, /*replace=*/true);
       },
-      quiet);
+      quiet, checkpoint);
+  if (result.training.interrupted != 0) return result;  // the checkpoint holds the fit
+  if (fs::exists(checkpoint)) fs::remove(checkpoint);   // finished: nothing left to continue
   // Zero epochs (evaluating a model to fine-tune as it is) still leave a model file.
   if (!fs::exists(model_file)) save_model(*model, model_file);
   if (!windows.ends(Split::kTest).empty()) {
@@ -164,6 +180,26 @@ FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool qu
     write_evaluation_csv(result.evaluation, run_directory / "evaluation.csv");
   }
   return result;
+}
+
+}  // namespace
+
+FitResult run_fit(const FitExperiment& e, const fs::path& run_directory, bool quiet) {
+  require(!fs::exists(run_directory) || fs::is_empty(run_directory),
+          "run directory exists and is not empty; nothing is overwritten", run_directory.string());
+  return fit(e, run_directory, quiet, /*resuming=*/false);
+}
+
+bool is_stopped_fit(const fs::path& run_directory) {
+  return fs::exists(run_directory / kFitCheckpointName);
+}
+
+FitResult resume_fit(const fs::path& run_directory, bool quiet) {
+  const fs::path config_file = run_directory / "config.yaml";
+  require(fs::exists(config_file), "is not a fit's run directory (no config.yaml)",
+          run_directory.string());
+  return fit(FitExperiment::from_config(Config::load_file(config_file)), run_directory, quiet,
+             /*resuming=*/true);
 }
 
 }  // namespace tendril::dynamics

@@ -63,8 +63,17 @@ struct FitResult {
 // overwritten): config.yaml (with overrides), progress.csv and TensorBoard events (one row per
 // epoch), model.tdm (the best model so far, replaced as validation improves) and, after
 // fitting, evaluation.csv (one-step and rollout RMSE on the test split).
+// Ctrl-C or SIGTERM (after core/interrupt.hpp's catch_interrupts) stops the fit at the end of an
+// epoch with a checkpoint (fit.ckpt; the result's training.interrupted names the signal) and
+// without the evaluation; resume_fit continues it to exactly the uninterrupted fit's files.
 FitResult run_fit(const FitExperiment& experiment, const std::filesystem::path& run_directory,
                   bool quiet = false);
+inline constexpr const char* kFitCheckpointName = "fit.ckpt";
+// Whether `run_directory` holds a fit stopped with a checkpoint.
+bool is_stopped_fit(const std::filesystem::path& run_directory);
+// Continues a stopped fit in its run directory with the config.yaml written there (a relative
+// data file is found from the working directory, as when the fit began).
+FitResult resume_fit(const std::filesystem::path& run_directory, bool quiet = false);
 
 // One-step errors and rollouts of every horizon on `split` of `data` (rows in the order given);
 // `on_row`, if given, sees each row as soon as it is measured (long rollouts take a while).

@@ -25,6 +25,7 @@ class SequenceNetwork : public torch::nn::Module {
   const ArchitectureSpec& spec() const { return spec_; }
   // The stream dropout masks come from in training mode (seed 002's network).
   void set_noise(const Rng& rng) { noise_ = rng; }
+  const Rng& noise() const { return noise_; }
 
  protected:
   ArchitectureSpec spec_;

@@ -3,10 +3,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <limits>
 #include <string>
 
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 
 namespace tendril::dynamics {
 
@@ -55,6 +58,112 @@ void restore(SequenceNetwork& network, const std::vector<torch::Tensor>& copies)
   for (std::size_t i = 0; i < parameters.size(); ++i) parameters[i].copy_(copies[i]);
 }
 
+// The fit's state at an epoch's end, what train_model needs to continue exactly.
+struct FitState {
+  int next_epoch = 0;
+  int64_t trained = 0;
+  std::vector<int64_t> order;  // the train windows as the last shuffle left them
+  std::vector<torch::Tensor> best;
+  TrainingReport report;
+};
+
+torch::Tensor rng_tensor(const Rng& rng) {
+  const Rng::State& state = rng.state();
+  std::vector<int64_t> words(state.words.begin(), state.words.end());
+  words.push_back(state.has_spare_normal ? 1 : 0);
+  int64_t spare = 0;
+  std::memcpy(&spare, &state.spare_normal, sizeof spare);
+  words.push_back(spare);
+  return torch::tensor(words, torch::kInt64);
+}
+
+Rng rng_from(const torch::Tensor& tensor, const std::string& where) {
+  require(tensor.numel() == 6, "a random stream of the wrong size", where);
+  const auto* words = tensor.data_ptr<int64_t>();
+  Rng::State state;
+  for (int i = 0; i < 4; ++i) state.words[i] = static_cast<uint64_t>(words[i]);
+  state.has_spare_normal = words[4] != 0;
+  std::memcpy(&state.spare_normal, &words[5], sizeof state.spare_normal);
+  Rng rng;
+  rng.set_state(state);
+  return rng;
+}
+
+void save_fit_state(const std::filesystem::path& file, SequenceNetwork& network,
+                    torch::optim::Adam& adam, const Rng& order_rng, const FitState& fit) {
+  torch::serialize::OutputArchive archive;
+  torch::serialize::OutputArchive weights, optimizer, best;
+  network.save(weights);
+  adam.save(optimizer);
+  for (std::size_t i = 0; i < fit.best.size(); ++i) best.write(std::to_string(i), fit.best[i]);
+  archive.write("weights", weights);
+  archive.write("adam", optimizer);
+  archive.write("best", best);
+  archive.write("best_count", static_cast<int64_t>(fit.best.size()));
+  archive.write("order", torch::tensor(fit.order, torch::kInt64));
+  archive.write("order_rng", rng_tensor(order_rng));
+  archive.write("noise_rng", rng_tensor(network.noise()));
+  archive.write("next_epoch", static_cast<int64_t>(fit.next_epoch));
+  archive.write("trained", fit.trained);
+  archive.write("best_epoch", static_cast<int64_t>(fit.report.best_epoch));
+  archive.write("best_validation_loss", fit.report.best_validation_loss);
+  archive.write("final_train_loss", fit.report.final_train_loss);
+  archive.write("seconds", fit.report.seconds);
+  // Written beside, then renamed: a kill mid-write leaves the previous state or none.
+  const std::filesystem::path partial = file.string() + ".partial";
+  archive.save_to(partial.string());
+  std::filesystem::rename(partial, file);
+}
+
+FitState load_fit_state(const std::filesystem::path& file, SequenceNetwork& network,
+                        torch::optim::Adam& adam, Rng& order_rng) {
+  const std::string where = file.string();
+  torch::serialize::InputArchive archive;
+  try {
+    archive.load_from(where);
+  } catch (const c10::Error& e) {
+    throw Error("not a readable fit checkpoint (" + std::string(e.what_without_backtrace()) + ")",
+                where);
+  }
+  const auto integer = [&](const char* key) {
+    c10::IValue value;
+    archive.read(key, value);
+    return value.toInt();
+  };
+  const auto real = [&](const char* key) {
+    c10::IValue value;
+    archive.read(key, value);
+    return value.toDouble();
+  };
+  torch::serialize::InputArchive weights, optimizer, best;
+  archive.read("weights", weights);
+  archive.read("adam", optimizer);
+  archive.read("best", best);
+  network.load(weights);
+  adam.load(optimizer);
+  FitState fit;
+  for (int64_t i = 0, n = integer("best_count"); i < n; ++i) {
+    torch::Tensor tensor;
+    best.read(std::to_string(i), tensor);
+    fit.best.push_back(tensor);
+  }
+  torch::Tensor order, order_words, noise_words;
+  archive.read("order", order);
+  archive.read("order_rng", order_words);
+  archive.read("noise_rng", noise_words);
+  fit.order.assign(order.data_ptr<int64_t>(), order.data_ptr<int64_t>() + order.numel());
+  order_rng = rng_from(order_words, where);
+  network.set_noise(rng_from(noise_words, where));
+  fit.next_epoch = static_cast<int>(integer("next_epoch"));
+  fit.trained = integer("trained");
+  fit.report.best_epoch = static_cast<int>(integer("best_epoch"));
+  fit.report.best_validation_loss = real("best_validation_loss");
+  fit.report.final_train_loss = real("final_train_loss");
+  fit.report.seconds = real("seconds");
+  fit.report.epochs_run = fit.next_epoch;
+  return fit;
+}
+
 double mean_loss(Model& model, const WindowSet& windows, std::span<const int64_t> ends,
                  int batch_size) {
   torch::NoGradGuard no_grad;
@@ -101,9 +210,22 @@ double TrainingOptions::learning_rate_at(int epoch) const {
   return learning_rate * std::pow(final_learning_rate / learning_rate, progress);
 }
 
+int checkpoint_epochs(const std::filesystem::path& checkpoint_file) {
+  torch::serialize::InputArchive archive;
+  try {
+    archive.load_from(checkpoint_file.string());
+  } catch (const c10::Error& e) {
+    throw Error("not a readable fit checkpoint (" + std::string(e.what_without_backtrace()) + ")",
+                checkpoint_file.string());
+  }
+  c10::IValue value;
+  archive.read("next_epoch", value);
+  return static_cast<int>(value.toInt());
+}
+
 TrainingReport train_model(Model& model, const WindowSet& windows, const TrainingOptions& options,
                            uint64_t seed, const std::function<void(const EpochReport&)>& on_epoch,
-                           bool quiet) {
+                           bool quiet, const std::filesystem::path& checkpoint_file) {
   // The latest windows of the training data are held out for validation (neighbouring windows
   // share all but one row, so a random hold-out would leak).
   const std::vector<int64_t>& all = windows.ends(Split::kTrain);
@@ -130,9 +252,29 @@ TrainingReport train_model(Model& model, const WindowSet& windows, const Trainin
   report.best_validation_loss = std::numeric_limits<double>::quiet_NaN();
   std::vector<torch::Tensor> best;
   int64_t trained = 0;
-  const auto start = Clock::now();
-  auto last_print = start - std::chrono::seconds(2);
-  for (int epoch = 0; epoch < options.epochs; ++epoch) {
+  int first_epoch = 0;
+  double earlier_seconds = 0.0;  // of the fit before the checkpoint it continues from
+  if (!checkpoint_file.empty() && std::filesystem::exists(checkpoint_file)) {
+    FitState fit = load_fit_state(checkpoint_file, network, adam, order);
+    require(fit.order.size() == train.size(),
+            "the checkpoint holds " + std::to_string(fit.order.size()) + " training windows, the " +
+                "data gives " + std::to_string(train.size()) + " (another data set?)",
+            checkpoint_file.string());
+    train = std::move(fit.order);
+    best = std::move(fit.best);
+    trained = fit.trained;
+    first_epoch = fit.next_epoch;
+    earlier_seconds = fit.report.seconds;
+    report.best_epoch = fit.report.best_epoch;
+    report.best_validation_loss = fit.report.best_validation_loss;
+    report.final_train_loss = fit.report.final_train_loss;
+    report.epochs_run = fit.report.epochs_run;
+  }
+  const int64_t trained_before = trained;
+  const auto start = Clock::now() - std::chrono::duration_cast<Clock::duration>(
+                                        std::chrono::duration<double>(earlier_seconds));
+  auto last_print = Clock::now() - std::chrono::seconds(2);
+  for (int epoch = first_epoch; epoch < options.epochs; ++epoch) {
     const double lr = options.learning_rate_at(epoch);
     for (auto& group : adam.param_groups()) {
       static_cast<torch::optim::AdamOptions&>(group.options()).lr(lr);
@@ -161,8 +303,8 @@ TrainingReport train_model(Model& model, const WindowSet& windows, const Trainin
       const auto now = Clock::now();
       if (!quiet && now - last_print >= std::chrono::seconds(1)) {
         last_print = now;
-        const double elapsed = std::chrono::duration<double>(now - start).count();
-        const double rate = static_cast<double>(trained) / elapsed;
+        const double elapsed = std::chrono::duration<double>(now - start).count() - earlier_seconds;
+        const double rate = static_cast<double>(trained - trained_before) / elapsed;
         const double total = static_cast<double>(per_epoch) * options.epochs;
         std::fprintf(stderr,
                      "\repoch %d/%d  batch %lld/%lld  loss %.4g  best val %s  %.0f windows/s  "
@@ -198,6 +340,16 @@ TrainingReport train_model(Model& model, const WindowSet& windows, const Trainin
     if (options.patience > 0 && epoch + 1 - report.best_epoch >= options.patience) {
       report.stopped_early = true;
       break;
+    }
+    if (!checkpoint_file.empty() && interrupt_signal() != 0 && epoch + 1 < options.epochs) {
+      report.seconds = epoch_report.seconds;
+      report.windows_per_second = static_cast<double>(trained) / std::max(report.seconds, 1e-9);
+      save_fit_state(checkpoint_file, network, adam, order,
+                     FitState{epoch + 1, trained, train, best, report});
+      report.interrupted = interrupt_signal();
+      network.eval();
+      if (!quiet) std::fputc('\n', stderr);
+      return report;
     }
   }
   if (!best.empty()) restore(network, best);

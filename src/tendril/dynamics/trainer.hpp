@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 
 #include "tendril/core/config.hpp"
@@ -56,6 +57,7 @@ struct TrainingReport {
   double windows_per_second = 0.0;
   int64_t train_windows = 0;
   int64_t validation_windows = 0;
+  int interrupted = 0;  // the signal that stopped the fit at an epoch's end (a checkpoint holds it)
 };
 
 // Fits `model` on the train windows of `windows` with Adam on the MSE of the network's output
@@ -64,8 +66,17 @@ struct TrainingReport {
 // `improved` set, the model holds the best weights so far (the caller may save them). At the
 // end the model holds the weights of the best validation loss (or the last epoch's without a
 // validation split). Prints a progress line with ETA on standard error unless `quiet`.
+//
+// With a `checkpoint_file`, a SIGINT or SIGTERM caught meanwhile (core/interrupt.hpp) stops the
+// fit at the end of the current epoch: everything the later epochs need (weights, Adam's state,
+// the random streams, the shuffled order, the best weights and the report so far) goes to that
+// file and the report says `interrupted`. When the file exists at the start, the fit continues
+// from it and computes exactly what the uninterrupted fit computes.
 TrainingReport train_model(Model& model, const WindowSet& windows, const TrainingOptions& options,
                            uint64_t seed, const std::function<void(const EpochReport&)>& on_epoch,
-                           bool quiet = false);
+                           bool quiet = false, const std::filesystem::path& checkpoint_file = {});
+
+// The epochs a fit checkpoint of train_model holds (the last epoch its fit logged).
+int checkpoint_epochs(const std::filesystem::path& checkpoint_file);
 
 }  // namespace tendril::dynamics
