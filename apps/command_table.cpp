@@ -524,7 +524,16 @@ std::vector<CommandSpec> command_table() {
   });
   table.push_back({
       .words = {"list", "envs"},
+      .positionals = "[ID ...]",
+      .min_positionals = 0,
+      .max_positionals = -1,
       .summary = "The registered environment ids, their time limits and what they are.",
+      .description = "With --describe, each environment as its default parameters make it: "
+                     "observation and action spaces and the info values a step reports (or the "
+                     "parameters it needs). docs/envs.md is --markdown's output.",
+      .options = {{"describe", "", "Spaces and info values of each environment."},
+                  {"markdown", "", "The reference page docs/envs.md."}},
+      .examples = {"tendril list envs --describe Elastica/Tracking3D-v0"},
       .run = list_envs_command,
   });
   table.push_back({

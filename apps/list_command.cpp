@@ -1,9 +1,14 @@
 // `tendril list envs|algorithms|wrappers`: what the registries hold.
 #include <cstdio>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
+#include "tendril/core/env.hpp"
+#include "tendril/core/error.hpp"
+#include "tendril/core/rng.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/wrappers/wrapper_registry.hpp"
 #ifdef TENDRIL_WITH_RL
@@ -12,13 +17,81 @@
 
 namespace tendril::apps {
 
-int list_envs_command(const Arguments&) {
+namespace {
+
+std::string limit_text(const envs::EnvSpec& spec) {
+  return spec.max_episode_steps ? std::to_string(*spec.max_episode_steps) + " steps" : "no limit";
+}
+
+// An environment as its default parameters make it: its spaces and the info values a step
+// reports (one step from reset(0) with a sampled action); or why it needs parameters.
+struct Description {
+  std::string observation, action, info, needs;
+};
+
+Description describe(const envs::Registry& registry, const std::string& id) {
+  Description d;
+  try {
+    const std::unique_ptr<Env> env = registry.make(id);
+    d.observation = env->observation_space().describe();
+    d.action = env->action_space().describe();
+    env->reset(0);
+    Rng rng(0);
+    const Step step = env->step(env->action_space().sample(rng));
+    for (const auto& [name, value] : step.info.entries()) {
+      d.info += (d.info.empty() ? "" : ", ") + name;
+    }
+  } catch (const Error& e) {
+    d.needs = e.what();
+  }
+  return d;
+}
+
+}  // namespace
+
+int list_envs_command(const Arguments& line) {
   const envs::Registry& registry = envs::builtin_registry();
-  for (const std::string& id : registry.ids()) {
+  std::vector<std::string> ids = line.positional.empty() ? registry.ids() : line.positional;
+  for (const std::string& id : ids) {
+    if (!registry.contains(id)) throw UsageError("no environment '" + id + "' (tendril list envs)");
+  }
+  if (line.has("markdown")) {
+    std::printf(
+        "# Environments\n\nGenerated from the registry (`tendril list envs --markdown`): each id "
+        "as its default parameters make it; `tendril list envs --describe ID` prints the same. "
+        "Spaces are written Box(size, [low, high]) or Discrete(n); the info values are those a "
+        "step reports (`tendril run` averages them per step and at episodes' ends).\n");
+    for (const std::string& id : ids) {
+      const envs::EnvSpec& spec = registry.spec(id);
+      const Description d = describe(registry, id);
+      std::printf("\n## %s\n\n%s.\n\n| | |\n|---|---|\n| time limit | %s |\n", id.c_str(),
+                  spec.summary.c_str(), limit_text(spec).c_str());
+      if (d.needs.empty()) {
+        std::printf("| observation | `%s` |\n| action | `%s` |\n| info | %s |\n",
+                    d.observation.c_str(), d.action.c_str(),
+                    d.info.empty() ? "none" : d.info.c_str());
+      } else {
+        std::printf("| needs | %s |\n", d.needs.c_str());
+      }
+    }
+    return 0;
+  }
+  for (const std::string& id : ids) {
     const envs::EnvSpec& spec = registry.spec(id);
-    const std::string limit =
-        spec.max_episode_steps ? std::to_string(*spec.max_episode_steps) + " steps" : "no limit";
-    std::printf("%-36s %-12s %s\n", id.c_str(), limit.c_str(), spec.summary.c_str());
+    if (!line.has("describe")) {
+      std::printf("%-36s %-12s %s\n", id.c_str(), limit_text(spec).c_str(), spec.summary.c_str());
+      continue;
+    }
+    const Description d = describe(registry, id);
+    std::printf("%s: %s\n  time limit   %s\n", id.c_str(), spec.summary.c_str(),
+                limit_text(spec).c_str());
+    if (d.needs.empty()) {
+      std::printf("  observation  %s\n  action       %s\n  info         %s\n",
+                  d.observation.c_str(), d.action.c_str(),
+                  d.info.empty() ? "none" : d.info.c_str());
+    } else {
+      std::printf("  needs        %s\n", d.needs.c_str());
+    }
   }
   return 0;
 }
