@@ -1,5 +1,6 @@
 #include "tendril/envs/elastica/elastica_arm_env.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "tendril/core/error.hpp"
@@ -10,7 +11,12 @@ ElasticaArmEnv::ElasticaArmEnv(Setup setup)
     : id_(std::move(setup.id)),
       arm_spec_(std::move(setup.arm)),
       arm_(physics::build_elastica_arm(arm_spec_)),
-      substeps_per_action_(setup.substeps_per_action),
+      // An implicit rod covers the same action period in steps of its own length.
+      substeps_per_action_(
+          arm_spec_.integrator == physics::RodIntegrator::kPositionVerlet
+              ? setup.substeps_per_action
+              : static_cast<int>(std::lround(setup.substeps_per_action * arm_spec_.time_step /
+                                             arm_spec_.implicit_step))),
       observation_size_(setup.observation_size),
       nan_penalty_(setup.nan_penalty),
       obstacles_(std::move(setup.obstacles)),

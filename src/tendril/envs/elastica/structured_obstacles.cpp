@@ -38,6 +38,7 @@ physics::ElasticaArmSpec structured_arm(const StructuredObstacles::Params& param
   spec.actuation.control_points = params.control_points;
   spec.actuation.positions = positions;
   if (params.obstacle_mode == StructuredObstacles::ObstacleMode::kPenalty) spec.obstacles.clear();
+  spec.integrator = params.integrator;
   return spec;
 }
 
@@ -56,6 +57,12 @@ std::unique_ptr<Env> StructuredObstacles::create(const Config& params) {
             key_of(params, "obstacle_mode"));
   }
   values.penalty_weight = params.get_or<double>("penalty_weight", values.penalty_weight);
+  try {
+    values.integrator =
+        physics::parse_integrator(params.get_or<std::string>("integrator", "verlet"));
+  } catch (const Error& e) {
+    throw Error(e.what_wrong(), key_of(params, "integrator"));
+  }
   return std::make_unique<StructuredObstacles>(std::move(values));
 }
 

@@ -36,6 +36,8 @@ namespace tendril::envs::elastica {
 //     the reward pays −φ·f(S), f the fraction of the 50 elements, capsules of the arm's radius
 //     0.05 m, that intersect an obstacle; see intersecting_elements).
 //   penalty_weight: φ, default 10 (the seed runs 10 and 100); penalty mode only.
+//   integrator: verlet (the paper's, default), backward_euler or bdf2 (one implicit step per
+//     action; docs/results/implicit_rods.md).
 class StructuredObstacles : public ElasticaArmEnv {
  public:
   enum class ObstacleMode { kContact, kPenalty };
@@ -44,6 +46,7 @@ class StructuredObstacles : public ElasticaArmEnv {
     std::vector<double> control_point_positions;  // empty: equidistant
     ObstacleMode obstacle_mode = ObstacleMode::kContact;
     double penalty_weight = 10.0;
+    physics::RodIntegrator integrator = physics::RodIntegrator::kPositionVerlet;
   };
 
   static constexpr int kObstacles = 8;
@@ -55,7 +58,7 @@ class StructuredObstacles : public ElasticaArmEnv {
   static constexpr double kArmRadius = 0.05;  // m, Table 6; the intersection test's element radius
 
   // Registry factory; params: control_points, control_point_positions, obstacle_mode,
-  // penalty_weight. Raises Error naming the key of an invalid value.
+  // penalty_weight, integrator. Raises Error naming the key of an invalid value.
   static std::unique_ptr<Env> create(const Config& params);
 
   StructuredObstacles() : StructuredObstacles(Params{}) {}

@@ -1,16 +1,33 @@
 #include "tendril/envs/elastica/tracking_3d.hpp"
 
+#include "tendril/core/error.hpp"
 #include "tendril/envs/elastica/rewards.hpp"
 
 namespace tendril::envs::elastica {
 
-std::unique_ptr<Env> Tracking3D::create(const Config& /*params*/) {
-  return std::make_unique<Tracking3D>();
+namespace {
+
+physics::ElasticaArmSpec tracking_arm(physics::RodIntegrator integrator) {
+  physics::ElasticaArmSpec spec = physics::ElasticaArmSpec::tracking();
+  spec.integrator = integrator;
+  return spec;
 }
 
-Tracking3D::Tracking3D()
+}  // namespace
+
+std::unique_ptr<Env> Tracking3D::create(const Config& params) {
+  physics::RodIntegrator integrator;
+  try {
+    integrator = physics::parse_integrator(params.get_or<std::string>("integrator", "verlet"));
+  } catch (const Error& e) {
+    throw Error(e.what_wrong(), params.source() + ": integrator");
+  }
+  return std::make_unique<Tracking3D>(integrator);
+}
+
+Tracking3D::Tracking3D(physics::RodIntegrator integrator)
     : ElasticaArmEnv(Setup{"Elastica/Tracking3D-v0",
-                           physics::ElasticaArmSpec::tracking(),
+                           tracking_arm(integrator),
                            kSubstepsPerAction,
                            kObservationSize,
                            kNanPenalty,

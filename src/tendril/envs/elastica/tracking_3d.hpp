@@ -32,10 +32,11 @@ class Tracking3D : public ElasticaArmEnv {
   static constexpr int kEpisodeSteps = 7142;  // 10 s / 1.4 ms
   static constexpr double kNanPenalty = -1000.0;
 
-  // Registry factory; no parameters.
+  // Registry factory; params: integrator (verlet, the paper's and the default; backward_euler
+  // or bdf2: one implicit step per action, docs/results/implicit_rods.md).
   static std::unique_ptr<Env> create(const Config& params);
 
-  Tracking3D();
+  explicit Tracking3D(physics::RodIntegrator integrator = physics::RodIntegrator::kPositionVerlet);
 
   // Test hooks: places the target keeping its velocity, or sets both (a zero velocity holds
   // it still until the next direction change).

@@ -102,6 +102,13 @@ PneumaticArmSpec arm_spec_from(const Config& params) {
     throw Error("must be at least 1", key_where(twin, "elements_per_module"));
   }
   spec.time_step = positive(twin, "time_step_s", spec.time_step);
+  if (twin.has("integrator")) {
+    try {
+      spec.integrator = physics::parse_integrator(twin.get<std::string>("integrator"));
+    } catch (const Error& e) {
+      throw Error(e.what_wrong(), key_where(twin, "integrator"));
+    }
+  }
   spec.bend_per_bar =
       std::numbers::pi / 180.0 *
       non_negative(twin, "bend_deg_per_bar", spec.bend_per_bar * 180.0 / std::numbers::pi);

@@ -40,6 +40,13 @@ std::unique_ptr<Env> SmaLimbEnv::create(const Config& params) {
   const std::string limb = params.get_or<std::string>("limb", "stiff");
   physics::SmaLimbSpec spec = physics::SmaLimbSpec::variant(limb);
   spec.tip_mass = params.get_or<double>("tip_mass", 0.0);
+  if (params.has("integrator")) {
+    try {
+      spec.integrator = physics::parse_integrator(params.get<std::string>("integrator"));
+    } catch (const Error& e) {
+      throw Error(e.what_wrong(), params.source() + ": integrator");
+    }
+  }
   const uint64_t seed = params.get_or<uint64_t>("seed", 0);
   LimbCalibration calibration = LimbCalibration::nominal(limb);
   if (params.has("calibration")) {

@@ -198,6 +198,14 @@ void ImplicitStepper::step(const RodModel& model, RodState& state, const PartsBy
     target_angular_velocities_ = state.angular_velocities;
   }
 
+  // Newton starts from the rates extrapolated linearly from the previous step's (the rates at
+  // the step's start without a previous step).
+  if (has_history_) {
+    const double ratio = h / previous_step_;
+    state.velocities += ratio * (state.velocities - previous_velocities_);
+    state.angular_velocities += ratio * (state.angular_velocities - previous_angular_velocities_);
+  }
+
   parts_at_start_.clear();
   SnapshotWriter out(parts_at_start_);
   for (RodPart* part : parts.start_step) part->save_state(out);

@@ -41,8 +41,9 @@ class NewtonFailure : public Error {
 // (Hairer & Wanner, Solving ODEs II, §III.5); its first step, and the first after the state was
 // set from outside, is backward Euler.
 //
-// Newton starts from the rates at the step's start (v₊ = v, ω₊ = ω: the configuration the
-// rates alone would reach, as the lattice's ImplicitSolver does). It keeps the last factorized
+// Newton starts from the rates extrapolated from the last two steps' (v₊ = v + (h/h₋)(v − v₋)),
+// or, on a first step, from the rates at its start (the configuration the rates alone would
+// reach, as the lattice's ImplicitSolver does). It keeps the last factorized
 // Newton matrix, from this step or an earlier one, while the updates contract fast (the chord
 // method, as Hairer & Wanner's RADAU5 keeps its Jacobian across steps); when the contraction
 // rate θ = |Δ_k|/|Δ_{k−1}| exceeds 0.2, or the step's length γh changed, it assembles and

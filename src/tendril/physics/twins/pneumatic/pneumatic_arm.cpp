@@ -36,6 +36,7 @@ RodSpec rod_spec(const PneumaticArmSpec& spec) {
   rod.direction = -Eigen::Vector3d::UnitZ();
   rod.normal = Eigen::Vector3d::UnitX();
   rod.time_step = spec.time_step;
+  rod.integrator = spec.integrator;
   return rod;
 }
 

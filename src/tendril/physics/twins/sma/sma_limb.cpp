@@ -1,5 +1,7 @@
 #include "tendril/physics/twins/sma/sma_limb.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -32,7 +34,9 @@ RodSpec rod_spec(const SmaLimbSpec& limb) {
   spec.normal = Eigen::Vector3d::UnitX();
   spec.tip_mass = limb.tip_mass;
   spec.rotary_inertia_scale = limb.rotary_inertia_scale;
-  spec.time_step = limb.time_step();
+  spec.integrator = limb.integrator;
+  spec.time_step =
+      limb.integrator == RodIntegrator::kPositionVerlet ? limb.time_step() : limb.implicit_step;
   return spec;
 }
 
@@ -60,7 +64,15 @@ void SmaLimb::set_pwm(const std::array<int, 4>& pwm) { actuator_->set_pwm(pwm, r
 
 BendReading SmaLimb::next_reading() {
   const int64_t target = sensor_->next_sample_ms() * spec_.steps_per_millisecond;
-  if (finite_) finite_ = rod_.advance(static_cast<int>(target - steps_));
+  if (finite_ && rod_.is_implicit()) {
+    const double duration =
+        1e-3 * static_cast<double>(target - steps_) / spec_.steps_per_millisecond;
+    const int steps =
+        std::max(1, static_cast<int>(std::ceil(duration / spec_.implicit_step - 1e-9)));
+    if (duration > 0.0) finite_ = rod_.advance_by(duration, steps);
+  } else if (finite_) {
+    finite_ = rod_.advance(static_cast<int>(target - steps_));
+  }
   steps_ = target;
   last_reading_ = sensor_->sample(rod_.state());  // also draws the next reading's time
   if (!finite_) last_reading_.angles_deg.setConstant(std::numeric_limits<double>::quiet_NaN());

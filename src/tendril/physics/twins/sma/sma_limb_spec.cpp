@@ -21,6 +21,7 @@ void SmaLimbSpec::validate() const {
   require(n_elements >= 2, "n_elements must be at least 2", who);
   require(steps_per_millisecond >= 1, "steps_per_millisecond must be at least 1", who);
   positive(rotary_inertia_scale, "rotary_inertia_scale");
+  positive(implicit_step, "implicit_step");
   require(std::isfinite(damping_rate) && damping_rate >= 0.0,
           "damping_rate must be finite and non-negative", who);
   require(std::isfinite(tip_mass) && tip_mass >= 0.0, "tip_mass must be finite and non-negative",

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "tendril/physics/rod/rod_spec.hpp"
 #include "tendril/physics/twins/sma/bend_sensor.hpp"
 #include "tendril/physics/twins/sma/sma_actuator.hpp"
 
@@ -27,6 +28,11 @@ struct SmaLimbSpec {
   int n_elements = 10;
   int steps_per_millisecond = 5;
   double rotary_inertia_scale = 4.0;  // RodSpec::rotary_inertia_scale
+  // Position Verlet at steps_per_millisecond is the reference. An implicit rod instead takes,
+  // from one reading to the next, the fewest equal steps of at most implicit_step (s), so every
+  // reading lands on its millisecond (docs/results/implicit_rods.md for the accuracy).
+  RodIntegrator integrator = RodIntegrator::kPositionVerlet;
+  double implicit_step = 0.005;
   // Viscous loss of the silicone as Rayleigh damping: every rate decays at this rate, 1/s.
   double damping_rate = 15.0;
   bool hanging = true;    // base up, limb along −z; false: upright along +z

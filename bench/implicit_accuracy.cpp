@@ -1,0 +1,250 @@
+// Accuracy of the implicit rod integrators against each robot's explicit reference: the tip's
+// deviation over an episode under the seeds' own actuation signals, and the speed, for a range
+// of implicit steps. Writes one CSV row per (robot, integrator, step); the largest step within
+// each robot's tolerance is read from it (docs/results/implicit_rods.md).
+//
+//   build/bench/implicit_accuracy [out.csv]   (default docs/results/implicit_rods/accuracy.csv)
+//
+// Robots and signals:
+//   case1      the Elastica arm of Tracking3D-v0 (20 elements, Verlet 0.2 ms), a random policy's
+//              12 control points drawn afresh every RL step (1.4 ms), 10 s; tip in mm.
+//   case3      the arm of StructuredObstacles-v0 (50 elements, Verlet 0.1 ms, eight cylinders
+//              with soft-wall contact), a random policy's two control points every 1.4 ms
+//              (rate-limited), 5 s; tip in mm.
+//   sma        the stiff SMA limb (10 elements, Verlet 0.2 ms), count-based exploration's PWM
+//              (seed 001, ten readings per hold) recorded on the reference and replayed, 120 s;
+//              the bend sensor's true angles in degrees at every reading.
+//   pneumatic  the pneumatic arm (18 elements, Verlet 0.5 ms, stochastic effects of the data
+//              protocol on), the saturating pressure signal at 10 Hz (seed 002), 60 s; module
+//              3's tip in mm at every motion-capture sample (100 Hz).
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tendril/core/rng.hpp"
+#include "tendril/envs/pneumatic/saturating_signal.hpp"
+#include "tendril/envs/sma_limb/limb_calibration.hpp"
+#include "tendril/envs/sma_limb/throttle_sources.hpp"
+#include "tendril/physics/arms/elastica_arm.hpp"
+#include "tendril/physics/twins/pneumatic/pneumatic_arm.hpp"
+#include "tendril/physics/twins/sma/sma_limb.hpp"
+
+namespace tendril {
+namespace {
+
+using physics::RodIntegrator;
+using Clock = std::chrono::steady_clock;
+
+// A trajectory of read-outs (mm or degrees), one per sample, and what it cost.
+struct Trajectory {
+  std::vector<Eigen::VectorXd> samples;
+  double wall_seconds = 0.0;
+  double simulated_seconds = 0.0;
+  physics::NewtonStatistics newton;
+  bool failed = false;
+  std::string failure;
+};
+
+struct Robot {
+  std::string name;
+  std::string unit;           // of the deviation
+  double tolerance;           // the robot's sensor noise, in `unit`
+  double reference_step;      // s, the paper's position-Verlet step
+  std::vector<double> steps;  // implicit steps to try, s
+  std::function<Trajectory(RodIntegrator, double)> run;
+};
+
+template <typename Body>
+Trajectory timed(Body&& body) {
+  Trajectory trajectory;
+  const auto start = Clock::now();
+  try {
+    body(trajectory);
+  } catch (const Error& e) {
+    trajectory.failed = true;
+    trajectory.failure = e.what();
+  }
+  trajectory.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return trajectory;
+}
+
+// The Elastica arm under a random policy: new control points every 1.4 ms.
+Trajectory run_arm(physics::ElasticaArmSpec spec, double duration, RodIntegrator integrator,
+                   double step) {
+  spec.integrator = integrator;
+  spec.implicit_step = step;
+  return timed([&](Trajectory& out) {
+    physics::ElasticaArm arm = physics::build_elastica_arm(spec);
+    const double action_period = 1.4e-3;
+    const int substeps = static_cast<int>(std::lround(action_period / arm.rod.time_step()));
+    Rng rng(11);
+    Eigen::VectorXd targets(arm.muscles->spec().action_size());
+    const int actions = static_cast<int>(std::lround(duration / action_period));
+    for (int a = 0; a < actions; ++a) {
+      for (Eigen::Index k = 0; k < targets.size(); ++k) targets[k] = rng.uniform(-1.0, 1.0);
+      arm.muscles->set_targets(targets);
+      if (!arm.rod.advance(substeps)) throw Error("the arm's state became non-finite");
+      out.samples.push_back(1e3 * arm.rod.tip_position());
+    }
+    out.simulated_seconds = arm.rod.time();
+    out.newton = arm.rod.newton_statistics();
+  });
+}
+
+// The PWM of count-based exploration on the explicit twin, one entry per reading.
+std::vector<std::array<int, 4>> exploration_pwm(const physics::SmaLimbSpec& spec, int readings) {
+  physics::SmaLimb limb(spec, 3);
+  const envs::sma_limb::LimbCalibration calibration =
+      envs::sma_limb::LimbCalibration::nominal(spec.name);
+  envs::sma_limb::CountBasedExploration exploration;
+  Rng rng(5);
+  std::vector<std::array<int, 4>> schedule;
+  std::array<int, 4> pwm{0, 0, 0, 0};
+  for (int r = 0; r < readings; ++r) {
+    const Eigen::Vector2d angles = limb.true_angles_deg();
+    exploration.observe(angles);
+    if (r % 10 == 0) {  // a hold: ten readings under the same throttles
+      const Eigen::Vector2i throttles = exploration.next(angles, rng);
+      pwm = calibration.pwm_for(throttles.x(), throttles.y());
+    }
+    schedule.push_back(pwm);
+    limb.set_pwm(pwm);
+    (void)limb.next_reading();
+  }
+  return schedule;
+}
+
+Trajectory run_sma(const std::vector<std::array<int, 4>>& schedule, RodIntegrator integrator,
+                   double step) {
+  physics::SmaLimbSpec spec = physics::SmaLimbSpec::stiff();
+  spec.integrator = integrator;
+  spec.implicit_step = step;
+  return timed([&](Trajectory& out) {
+    physics::SmaLimb limb(spec, 3);
+    for (const std::array<int, 4>& pwm : schedule) {
+      limb.set_pwm(pwm);
+      (void)limb.next_reading();
+      if (!limb.finite()) throw Error("the limb's state became non-finite");
+      out.samples.push_back(limb.true_angles_deg());
+    }
+    out.simulated_seconds = limb.time();
+    out.newton = limb.rod().newton_statistics();
+  });
+}
+
+Trajectory run_pneumatic(RodIntegrator integrator, double step) {
+  physics::pneumatic::PneumaticArmSpec spec;
+  spec.effects.drift = spec.effects.hysteresis = spec.effects.imbalance = true;
+  spec.effects.elasticity = true;
+  spec.integrator = integrator;
+  spec.time_step = integrator == RodIntegrator::kPositionVerlet ? 5.0e-4 : step;
+  return timed([&](Trajectory& out) {
+    physics::pneumatic::PneumaticArm arm(spec);
+    if (!arm.begin_trial(0)) throw Error("the arm did not settle");
+    envs::pneumatic::SaturatingSignal signal(envs::pneumatic::SaturatingSignalSpec{}, Rng(0));
+    for (int k = 0; k < 600; ++k) {  // 60 s at 10 Hz
+      arm.set_commands(signal.next(0.1));
+      for (int s = 0; s < 10; ++s) {
+        if (!arm.advance_samples(1)) throw Error("the arm's state became non-finite");
+        out.samples.push_back(1e3 * arm.true_tip_positions().col(2));
+      }
+    }
+    out.simulated_seconds = arm.time();
+    out.newton = arm.rod().newton_statistics();
+  });
+}
+
+}  // namespace
+}  // namespace tendril
+
+int main(int argc, char** argv) {
+  using namespace tendril;
+  const std::string path = argc > 1 ? argv[1] : "docs/results/implicit_rods/accuracy.csv";
+  const physics::SmaLimbSpec sma = physics::SmaLimbSpec::stiff();
+  const std::vector<std::array<int, 4>> schedule = exploration_pwm(sma, 1800);  // ≈ 120 s
+
+  std::vector<Robot> robots = {
+      {"case1",
+       "mm",
+       1.0,
+       2.0e-4,
+       {2.0e-4, 3.5e-4, 7.0e-4, 1.4e-3},
+       [](RodIntegrator i, double h) {
+         return run_arm(physics::ElasticaArmSpec::tracking(), 10.0, i, h);
+       }},
+      {"case3",
+       "mm",
+       1.0,
+       1.0e-4,
+       {1.0e-4, 2.0e-4, 3.5e-4, 7.0e-4, 1.4e-3},
+       [](RodIntegrator i, double h) {
+         return run_arm(physics::ElasticaArmSpec::structured_obstacles(), 5.0, i, h);
+       }},
+      {"sma",
+       "deg",
+       0.2,
+       sma.time_step(),
+       {1e-3, 2e-3, 5e-3, 1e-2, 2e-2},
+       [&](RodIntegrator i, double h) { return run_sma(schedule, i, h); }},
+      {"pneumatic",
+       "mm",
+       0.2,
+       5.0e-4,
+       {1e-3, 2e-3, 2.5e-3, 5e-3, 1e-2},
+       [](RodIntegrator i, double h) { return run_pneumatic(i, h); }},
+  };
+
+  std::ofstream csv(path);
+  if (!csv) {
+    std::fprintf(stderr, "cannot write %s\n", path.c_str());
+    return 1;
+  }
+  csv << "robot,integrator,step_ms,tolerance,unit,max_deviation,mean_deviation,"
+         "simulated_s_per_wall_s,speed_vs_reference,newton_iterations_per_step,"
+         "factorizations_per_step,halvings,within_tolerance\n";
+  for (const Robot& robot : robots) {
+    const Trajectory reference = robot.run(RodIntegrator::kPositionVerlet, robot.reference_step);
+    const double reference_speed = reference.simulated_seconds / reference.wall_seconds;
+    std::printf("%s: reference (position Verlet, %.2f ms) %.0f simulated s per wall s\n",
+                robot.name.c_str(), 1e3 * robot.reference_step, reference_speed);
+    csv << robot.name << ",verlet," << 1e3 * robot.reference_step << "," << robot.tolerance << ","
+        << robot.unit << ",0,0," << reference_speed << ",1,0,0,0,1\n";
+    for (RodIntegrator integrator : {RodIntegrator::kBackwardEuler, RodIntegrator::kBdf2}) {
+      for (double step : robot.steps) {
+        const Trajectory run = robot.run(integrator, step);
+        double largest = 0.0, mean = 0.0;
+        if (!run.failed) {
+          for (std::size_t k = 0; k < run.samples.size(); ++k) {
+            const double deviation = (run.samples[k] - reference.samples[k]).norm();
+            largest = std::max(largest, deviation);
+            mean += deviation / static_cast<double>(run.samples.size());
+          }
+        }
+        const double speed = run.failed ? 0.0 : run.simulated_seconds / run.wall_seconds;
+        const double steps = std::max<double>(1.0, static_cast<double>(run.newton.steps));
+        const bool within = !run.failed && largest <= robot.tolerance;
+        std::printf(
+            "  %-14s %6.2f ms: max %8.4f %s, mean %8.4f, %6.0f sim s/s (%5.2fx), %.2f it, "
+            "%.2f fact/step, %lld halvings%s%s\n",
+            physics::integrator_name(integrator), 1e3 * step, largest, robot.unit.c_str(), mean,
+            speed, speed / reference_speed, run.newton.iterations / steps,
+            run.newton.factorizations / steps, static_cast<long long>(run.newton.halvings),
+            within ? "  within" : "", run.failed ? ("  FAILED: " + run.failure).c_str() : "");
+        std::fflush(stdout);
+        csv << robot.name << "," << physics::integrator_name(integrator) << "," << 1e3 * step << ","
+            << robot.tolerance << "," << robot.unit << ","
+            << (run.failed ? std::string("nan") : std::to_string(largest)) << ","
+            << (run.failed ? std::string("nan") : std::to_string(mean)) << "," << speed << ","
+            << speed / reference_speed << "," << run.newton.iterations / steps << ","
+            << run.newton.factorizations / steps << "," << run.newton.halvings << ","
+            << (within ? 1 : 0) << "\n";
+      }
+    }
+  }
+  std::printf("wrote %s\n", path.c_str());
+  return 0;
+}
