@@ -115,26 +115,29 @@ void save_fit_state(const std::filesystem::path& file, SequenceNetwork& network,
   std::filesystem::rename(partial, file);
 }
 
+void open_fit_state(const std::filesystem::path& file, torch::serialize::InputArchive& archive) {
+  try {
+    archive.load_from(file.string());
+  } catch (const c10::Error& e) {
+    throw Error("not a readable fit checkpoint (" + std::string(e.what_without_backtrace()) + ")",
+                file.string());
+  }
+}
+
+// One scalar of a fit checkpoint.
+c10::IValue scalar(torch::serialize::InputArchive& archive, const char* key) {
+  c10::IValue value;
+  archive.read(key, value);
+  return value;
+}
+
 FitState load_fit_state(const std::filesystem::path& file, SequenceNetwork& network,
                         torch::optim::Adam& adam, Rng& order_rng) {
   const std::string where = file.string();
   torch::serialize::InputArchive archive;
-  try {
-    archive.load_from(where);
-  } catch (const c10::Error& e) {
-    throw Error("not a readable fit checkpoint (" + std::string(e.what_without_backtrace()) + ")",
-                where);
-  }
-  const auto integer = [&](const char* key) {
-    c10::IValue value;
-    archive.read(key, value);
-    return value.toInt();
-  };
-  const auto real = [&](const char* key) {
-    c10::IValue value;
-    archive.read(key, value);
-    return value.toDouble();
-  };
+  open_fit_state(file, archive);
+  const auto integer = [&](const char* key) { return scalar(archive, key).toInt(); };
+  const auto real = [&](const char* key) { return scalar(archive, key).toDouble(); };
   torch::serialize::InputArchive weights, optimizer, best;
   archive.read("weights", weights);
   archive.read("adam", optimizer);
@@ -212,15 +215,8 @@ double TrainingOptions::learning_rate_at(int epoch) const {
 
 int checkpoint_epochs(const std::filesystem::path& checkpoint_file) {
   torch::serialize::InputArchive archive;
-  try {
-    archive.load_from(checkpoint_file.string());
-  } catch (const c10::Error& e) {
-    throw Error("not a readable fit checkpoint (" + std::string(e.what_without_backtrace()) + ")",
-                checkpoint_file.string());
-  }
-  c10::IValue value;
-  archive.read("next_epoch", value);
-  return static_cast<int>(value.toInt());
+  open_fit_state(checkpoint_file, archive);
+  return static_cast<int>(scalar(archive, "next_epoch").toInt());
 }
 
 TrainingReport train_model(Model& model, const WindowSet& windows, const TrainingOptions& options,

@@ -139,17 +139,8 @@ void ArmBridge::clear_emergency_stop() {
 }
 
 double ArmBridge::ping() {
-  const auto sent = Clock::now();
-  const uint16_t seq = commands_.send(MessageType::kPing);
-  const auto deadline = sent + span_of(settings_.handshake_timeout_s);
-  while (auto frame = commands_.next(deadline)) {
-    if (frame->type == static_cast<uint8_t>(MessageType::kPong) &&
-        Pong::decode(frame->payload).ping_seq == seq) {
-      return seconds(Clock::now() - sent);
-    }
-    handle_other(*frame);
-  }
-  throw LinkDown("no PONG within " + std::to_string(settings_.handshake_timeout_s) + " s", name_);
+  return commands_.ping(
+      settings_.handshake_timeout_s, [this](const Frame& frame) { handle_other(frame); }, name_);
 }
 
 void ArmBridge::lost_link(const std::string& cause) {

@@ -38,4 +38,20 @@ void FramedLink::reopen() {
   transport_->reopen();
 }
 
+double FramedLink::ping(double timeout_s, const std::function<void(const Frame&)>& other,
+                        const std::string& who) {
+  const auto sent = Clock::now();
+  const uint16_t seq = send(MessageType::kPing);
+  const auto deadline =
+      sent + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeout_s));
+  while (auto frame = next(deadline)) {
+    if (frame->type == static_cast<uint8_t>(MessageType::kPong) &&
+        Pong::decode(frame->payload).ping_seq == seq) {
+      return std::chrono::duration<double>(Clock::now() - sent).count();
+    }
+    other(*frame);
+  }
+  throw LinkDown("no PONG within " + std::to_string(timeout_s) + " s", who);
+}
+
 }  // namespace tendril::hardware

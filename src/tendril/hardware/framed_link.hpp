@@ -1,8 +1,10 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "tendril/hardware/frame_parser.hpp"
@@ -26,6 +28,10 @@ class FramedLink {
   std::optional<Frame> next(Clock::time_point deadline);
   // Reopens the transport and forgets partial frames.
   void reopen();
+  // Sends a PING and waits for its PONG: the round trip in seconds. Frames arriving meanwhile
+  // go to `other`. LinkDown naming `who` if no PONG came within `timeout_s`.
+  double ping(double timeout_s, const std::function<void(const Frame&)>& other,
+              const std::string& who);
 
   const FrameParser& parser() const { return parser_; }
   Transport& transport() { return *transport_; }

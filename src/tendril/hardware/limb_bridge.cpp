@@ -167,18 +167,9 @@ void LimbBridge::clear_emergency_stop() {
 }
 
 double LimbBridge::ping() {
-  const auto sent = Clock::now();
-  const uint16_t seq = link_.send(MessageType::kPing);
-  const auto deadline = sent + span_of(settings_.handshake_timeout_s);
-  while (auto frame = link_.next(deadline)) {
-    if (frame->type == static_cast<uint8_t>(MessageType::kPong) &&
-        Pong::decode(frame->payload).ping_seq == seq) {
-      return seconds(Clock::now() - sent);
-    }
-    handle_other(*frame);
-  }
-  throw LinkDown("no PONG within " + std::to_string(settings_.handshake_timeout_s) + " s",
-                 port_name_);
+  return link_.ping(
+      settings_.handshake_timeout_s, [this](const Frame& frame) { handle_other(frame); },
+      port_name_);
 }
 
 void LimbBridge::handle_other(const Frame& frame) {
