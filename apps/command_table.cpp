@@ -31,7 +31,8 @@ std::vector<CommandSpec> command_table() {
           "checkpoint; `tendril resume RUN` continues exactly.\n\n"
           "An experiment with a `safety:` section co-trains a safety agent beside the task "
           "agent (writes safety.critic; seed 001 ch. 6); one with a `constrained:` section "
-          "trains a constrained baseline (Lagrangian relaxation or RSPO).",
+          "trains a constrained baseline (Lagrangian relaxation or RSPO); both stop, pause "
+          "and resume like any run, and end with their safety evaluation.",
       .options = {output("The run directory (default: the file's `output` -seed<N>-<time stamp>; "
                          "seeds of one experiment group together in report, plot and serve)."),
                   {"stop-at", "STEPS",
@@ -55,7 +56,8 @@ std::vector<CommandSpec> command_table() {
           "The resumed run computes what the uninterrupted run computes (off-policy runs: with "
           "save_replay_buffer: true); its config.yaml is used as saved. A model fit stopped by "
           "Ctrl-C or SIGTERM (its fit.ckpt) continues the same way, to the uninterrupted fit's "
-          "model and logs.",
+          "model and logs. Safety co-training and constrained runs resume with their safety "
+          "agent or cost critic.",
       .options = {{"stop-at", "STEPS", "Pause again at the first checkpoint at or past STEPS."},
                   {"quiet", "", "No progress line."}},
       .run = resume_command,

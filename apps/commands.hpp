@@ -1,9 +1,11 @@
 #pragma once
 
+#include <filesystem>
 #include <optional>
 
 #include "cli/arguments.hpp"
 #include "tendril/core/config.hpp"
+#include "tendril/rl/trainer.hpp"
 
 namespace tendril::apps {
 
@@ -44,8 +46,16 @@ int robot_emulate_command(const Arguments& line);
 int robot_check_command(const Arguments& line);
 
 // Safety co-training (an experiment's `safety:` section) and the constrained baselines
-// (`constrained:`), which `train` hands over.
-int safety_train(const Arguments& line, const Config& config);
+// (`constrained:`), which `train` and `resume` hand over: the task run with its companion
+// (rl/run_companion), then the finished run's safety evaluation. `output` unset: the default
+// run directory.
+int safety_train(const Arguments& line, const Config& config, const rl::TrainOptions& options);
+int run_safety_training(const Config& config, const std::optional<std::filesystem::path>& output,
+                        rl::TrainOptions options, bool resuming);
+
+// How a training run ended, printed; the exit status (0 finished or paused, 128 + the signal
+// that stopped it).
+int report_training(const rl::TrainResult& result);
 
 // "SIGINT", "SIGTERM": how the interruption of a run is reported.
 const char* signal_name(int signal);

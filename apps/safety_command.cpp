@@ -4,16 +4,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 #include "tendril/safety/constrained_experiment.hpp"
 #include "tendril/safety/diamond_deployment.hpp"
 #include "tendril/safety/run_epsilon_search.hpp"
@@ -23,13 +24,6 @@
 
 namespace tendril::apps {
 namespace {
-
-std::filesystem::path new_run_directory(const std::string& output) {
-  const std::time_t now = std::time(nullptr);
-  char stamp[32];
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-  return output + "-" + stamp;
-}
 
 void print_evaluation(const char* name, const safety::SafetyEvaluation& e) {
   std::printf("%-10s return %9.3f +/- %8.3f   safety rate %.3f   interventions %.3f\n", name,
@@ -81,49 +75,54 @@ int evaluate(const std::filesystem::path& run, const std::vector<double>& epsilo
   return 0;
 }
 
-std::filesystem::path run_directory_of(const Arguments& line, const rl::Experiment& task) {
-  return line.has("output") ? std::filesystem::path(line.value("output", ""))
-                            : new_run_directory(task.output);
-}
-
-void print_start(const rl::Experiment& task, const std::string& with,
-                 const std::filesystem::path& run) {
-  std::printf("training %s with %s on %s for %lld steps, seed %llu -> %s\n", task.algorithm.c_str(),
-              with.c_str(), task.env.id.c_str(), static_cast<long long>(task.n_timesteps),
-              static_cast<unsigned long long>(task.seed), run.string().c_str());
-}
-
-int train_baseline(const Arguments& line, const Config& config) {
-  const safety::ConstrainedExperiment baseline = safety::ConstrainedExperiment::from_config(config);
-  const rl::Experiment& task = baseline.task;
-  const std::filesystem::path run = run_directory_of(line, task);
-  print_start(task, "the " + baseline.method + " baseline", run);
-  const auto result = safety::train_constrained(baseline, run, line.has("quiet"));
-  std::printf("trained in %.1f s; multiplier %.4g, E[Q_risk] %.4f; model: %s/model.policy\n",
-              result.seconds, result.final_multiplier, result.final_cost_value,
-              run.string().c_str());
-  return evaluate(run, {0.0}, 100, task.seed, {}, "");
-}
-
 }  // namespace
 
-int safety_train(const Arguments& line, const Config& config) {
-  if (config.has("constrained")) return train_baseline(line, config);
-  const safety::SafetyExperiment co_trained = safety::SafetyExperiment::from_config(config);
-  const rl::Experiment& task = co_trained.task;
-  const std::filesystem::path run = run_directory_of(line, task);
-  print_start(task, "a " + co_trained.safety_algorithm + " safety agent", run);
-  const safety::SafetyTrainResult result =
-      safety::train_with_safety(co_trained, run, line.has("quiet"));
-  std::printf(
-      "trained in %.1f s; safety buffer: %lld stored, %lld gated, %lld unsafe entries; "
-      "training filter interventions %.3f\n",
-      result.seconds, static_cast<long long>(result.stored_transitions),
-      static_cast<long long>(result.gated_transitions),
-      static_cast<long long>(result.unsafe_entries), result.training_intervention_rate);
-  std::printf("model: %s/model.policy  safety critic: %s/safety.critic\n", run.string().c_str(),
-              run.string().c_str());
-  return evaluate(run, {co_trained.eval_epsilon}, co_trained.eval_episodes, task.seed, {}, "");
+int safety_train(const Arguments& line, const Config& config, const rl::TrainOptions& options) {
+  const std::optional<std::filesystem::path> output =
+      line.has("output") ? std::optional<std::filesystem::path>(line.value("output", ""))
+                         : std::nullopt;
+  return run_safety_training(config, output, options, /*resuming=*/false);
+}
+
+int run_safety_training(const Config& config, const std::optional<std::filesystem::path>& output,
+                        rl::TrainOptions options, bool resuming) {
+  // The companion that trains beside the task agent, and how the finished run is judged: a
+  // co-trained safety agent's own evaluation settings, the baselines unfiltered on 100 episodes.
+  std::optional<safety::SafetyExperiment> co_trained;
+  std::optional<safety::ConstrainedExperiment> baseline;
+  std::string with;
+  double epsilon = 0.0;
+  int episodes = 100;
+  if (config.has("safety")) {
+    co_trained.emplace(safety::SafetyExperiment::from_config(config));
+    options.companion = safety::co_trained_safety_agent(*co_trained);
+    with = "a " + co_trained->safety_algorithm + " safety agent";
+    epsilon = co_trained->eval_epsilon;
+    episodes = co_trained->eval_episodes;
+  } else {
+    baseline.emplace(safety::ConstrainedExperiment::from_config(config));
+    options.companion = safety::constrained_baseline(*baseline);
+    with = "the " + baseline->method + " baseline";
+  }
+  const rl::Experiment& task = co_trained ? co_trained->task : baseline->task;
+  const std::filesystem::path run = output.value_or(rl::default_run_directory(task));
+  std::printf("%s %s with %s on %s for %lld steps, seed %llu -> %s\n",
+              resuming ? "resuming" : "training", task.algorithm.c_str(), with.c_str(),
+              task.env.id.c_str(), static_cast<long long>(task.n_timesteps),
+              static_cast<unsigned long long>(task.seed), run.string().c_str());
+  std::fflush(stdout);  // before the progress line on standard error
+  catch_interrupts();
+  const rl::TrainResult result =
+      resuming ? rl::resume(run, task, options) : rl::train(task, run, options);
+  const int status = report_training(result);
+  if (!result.finished) return status;
+  for (const auto& [name, value] : result.companion_scalars) {
+    std::printf("%-32s %.6g\n", name.c_str(), value);
+  }
+  if (co_trained) {
+    std::printf("safety critic:  %s/safety.critic\n", run.string().c_str());
+  }
+  return evaluate(run, {epsilon}, episodes, task.seed, {}, "");
 }
 
 int safety_eval_command(const Arguments& line) {

@@ -18,11 +18,9 @@ const char* signal_name(int signal) {
   return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
 }
 
-namespace {
-
 // The exit status: 0 when the run finished or paused as asked, 128 + the signal when a signal
 // stopped it (the shell's convention), so scripts see the interruption.
-int report(const rl::TrainResult& result) {
+int report_training(const rl::TrainResult& result) {
   const std::string run = result.run_directory.string();
   std::printf("%s after %lld steps in %.1f s (%.0f steps/s)\n",
               result.finished      ? "finished"
@@ -51,6 +49,15 @@ int report(const rl::TrainResult& result) {
   return result.interrupted ? 128 + result.interrupted : 0;
 }
 
+namespace {
+
+rl::TrainOptions train_options(const Arguments& line) {
+  rl::TrainOptions options;
+  options.quiet = line.has("quiet");
+  options.stop_at = line.optional_integer("stop-at", 1, std::numeric_limits<int64_t>::max());
+  return options;
+}
+
 }  // namespace
 
 int resume_command(const Arguments& line) {
@@ -58,31 +65,26 @@ int resume_command(const Arguments& line) {
 #ifdef TENDRIL_WITH_DYNAMICS
   if (const std::optional<int> status = resume_stopped_fit(line)) return *status;
 #endif
+  const rl::TrainOptions options = train_options(line);
+#ifdef TENDRIL_WITH_SAFETY
   if (std::filesystem::exists(run / "config.yaml")) {
-    const Config config = Config::load_file(run / "config.yaml");
-    require(!config.has("safety") && !config.has("constrained"),
-            "safety co-training and constrained runs keep no checkpoints yet: train them again",
-            run.string());
+    const Config config = rl::load_run_config(run);
+    if (config.has("safety") || config.has("constrained")) {
+      return run_safety_training(config, run, options, /*resuming=*/true);
+    }
   }
-  rl::TrainOptions options;
-  options.quiet = line.has("quiet");
-  options.stop_at = line.optional_integer("stop-at", 1, std::numeric_limits<int64_t>::max());
+#endif
   catch_interrupts();
-  return report(rl::resume(line.positional.front(), options));
+  return report_training(rl::resume(run, options));
 }
 
 int train_command(const Arguments& line) {
   const Config config = line.load_config();
+  const rl::TrainOptions options = train_options(line);
 #ifdef TENDRIL_WITH_SAFETY
   // Safety co-training (a `safety:` section) and the constrained baselines (`constrained:`).
-  if (config.has("safety") || config.has("constrained")) {
-    require(!line.has("stop-at"), "safety and constrained runs train to the end", "--stop-at");
-    return safety_train(line, config);
-  }
+  if (config.has("safety") || config.has("constrained")) return safety_train(line, config, options);
 #endif
-  rl::TrainOptions options;
-  options.quiet = line.has("quiet");
-  options.stop_at = line.optional_integer("stop-at", 1, std::numeric_limits<int64_t>::max());
   const rl::Experiment experiment = rl::Experiment::from_config(config);
   const std::filesystem::path run = line.has("output")
                                         ? std::filesystem::path(line.value("output", ""))
@@ -94,7 +96,7 @@ int train_command(const Arguments& line) {
   std::printf("watch it live: tendril serve %s\n", run.string().c_str());
   std::fflush(stdout);  // before the progress line on standard error
   catch_interrupts();
-  return report(rl::train(experiment, run, options));
+  return report_training(rl::train(experiment, run, options));
 }
 
 }  // namespace tendril::apps

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "support/error_message.hpp"
+#include "support/same_run.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
 #include "tendril/core/run_lock.hpp"
@@ -100,26 +101,12 @@ std::vector<std::string> logged_steps(const fs::path& run) {
   return steps;
 }
 
-// (tag, step) → value over every event file of a run; duplicates fail the test.
-std::map<std::pair<std::string, int64_t>, float> event_scalars(const fs::path& run) {
-  std::map<std::pair<std::string, int64_t>, float> scalars;
-  for (const auto& entry : fs::directory_iterator(run)) {
-    if (entry.path().filename().string().rfind("events.out.tfevents.", 0) != 0) continue;
-    for (const EventScalar& s : read_event_scalars(entry.path())) {
-      if (s.tag == "time/fps" || s.tag == "time/time_elapsed") continue;
-      EXPECT_TRUE(scalars.emplace(std::make_pair(s.tag, s.step), s.value).second)
-          << s.tag << " logged twice at step " << s.step;
-    }
-  }
-  return scalars;
-}
-
 void expect_same_run(const fs::path& run, const fs::path& reference) {
   EXPECT_EQ(read_text(run / "model.policy"), read_text(reference / "model.policy"));
   EXPECT_EQ(read_text(run / "best_model.policy"), read_text(reference / "best_model.policy"));
   EXPECT_EQ(read_text(run / "eval.csv"), read_text(reference / "eval.csv"));
   EXPECT_EQ(logged_steps(run), logged_steps(reference));
-  EXPECT_EQ(event_scalars(run), event_scalars(reference));
+  EXPECT_EQ(testing::event_scalars(run), testing::event_scalars(reference));
 }
 
 class RunFaults : public ::testing::Test {

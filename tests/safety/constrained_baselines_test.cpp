@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -92,9 +93,15 @@ std::vector<Outcome> train_with_constraint(const std::filesystem::path& director
   return over_seeds(directory, method, [&](const std::filesystem::path& run, uint64_t seed) {
     const Config config =
         Config::parse(task_config("", seed) + constrained_section(method, multiplier));
-    const ConstrainedTrainResult trained =
-        train_constrained(ConstrainedExperiment::from_config(config), run, true);
-    return evaluated(run, trained.final_multiplier);
+    rl::TrainOptions quiet;
+    quiet.quiet = true;
+    const rl::TrainResult trained =
+        train_constrained(ConstrainedExperiment::from_config(config), run, quiet);
+    double multiplier = std::nan("");
+    for (const auto& [name, value] : trained.companion_scalars) {
+      if (name == "lagrangian/multiplier") multiplier = value;
+    }
+    return evaluated(run, multiplier);
   });
 }
 

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 
 #include "support/learning_seed.hpp"
+#include "support/same_run.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/interrupt.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
@@ -110,8 +113,15 @@ TEST(SafetyExperiment, TrainsWritesTheCriticAndEvaluatesWithAndWithoutTheFilter)
   experiment.set("seed", std::to_string(testing::learning_seed(3)));
   const SafetyExperiment e = SafetyExperiment::from_config(experiment);
   const auto run = fresh_directory("dqn");
-  const SafetyTrainResult trained = train_with_safety(e, run);
-  EXPECT_GT(trained.stored_transitions, 0);
+  rl::TrainOptions quiet;
+  quiet.quiet = true;
+  const rl::TrainResult trained = train_with_safety(e, run, quiet);
+  ASSERT_TRUE(trained.finished);
+  double stored = 0.0;
+  for (const auto& [name, value] : trained.companion_scalars) {
+    if (name == "safety/stored_transitions") stored = value;
+  }
+  EXPECT_GT(stored, 0.0);
   EXPECT_TRUE(std::filesystem::exists(run / "model.policy"));
   const auto critic = load_safety_critic(run / "safety.critic");
   // The co-trained critic separates a state deep inside the safe set from a doomed one.
@@ -133,6 +143,59 @@ TEST(SafetyExperiment, TrainsWritesTheCriticAndEvaluatesWithAndWithoutTheFilter)
 
   EXPECT_THROW(train_with_safety(e, run), Error);
   EXPECT_TRUE(std::filesystem::exists(run / "safety.critic"));
+}
+
+// A co-training run with the training filter, stopped by SIGINT, resumed, paused and resumed
+// again, ends with the files of the run that was never stopped: the task policy, the safety critic,
+// the evaluations and every logged scalar (the filter's counts and draws, the gated buffer, the
+// safety agent's weights, optimizer and streams travel in the checkpoint).
+TEST(SafetyExperiment, AnInterruptedCoTrainingResumesToTheUninterruptedRunsFiles) {
+  Config experiment = Config::parse(R"(
+algorithm: sac
+env: {id: Safety/DoubleIntegrator-v0, params: {horizon: 100, dt: 0.05}}
+algo: {net_arch: [16, 16], learning_starts: 100, batch_size: 32, log_interval: 300}
+n_timesteps: 1200
+seed: 5
+checkpoint_freq: 300
+save_replay_buffer: true
+safety:
+  algorithm: sac
+  algo: {net_arch: [16, 16], learning_starts: 0, batch_size: 32, buffer_size: 100}
+  buffer_size: 2000
+  learning_starts: 100
+  training_filter: {enabled: true, epsilon: -5.0}
+  eval: {episodes: 5}
+)");
+  const SafetyExperiment e = SafetyExperiment::from_config(experiment);
+  rl::TrainOptions quiet;
+  quiet.quiet = true;
+  const auto whole = fresh_directory("whole");
+  ASSERT_TRUE(train_with_safety(e, whole, quiet).finished);
+
+  const auto stopped = fresh_directory("stopped");
+  request_interrupt(SIGINT);  // seen at the end of the first iteration, 300 steps
+  const rl::TrainResult first = train_with_safety(e, stopped, quiet);
+  clear_interrupt();
+  EXPECT_FALSE(first.finished);
+  EXPECT_EQ(first.interrupted, SIGINT);
+  EXPECT_EQ(rl::latest_checkpoint(stopped).filename(), "step_300.ckpt");
+  EXPECT_FALSE(std::filesystem::exists(stopped / "safety.critic"));
+  // Paused again at 900 steps, after the filter has drawn safe actions (from 600 on), then
+  // resumed to the end.
+  rl::TrainOptions resumed = quiet;
+  resumed.companion = co_trained_safety_agent(e);
+  resumed.stop_at = 900;
+  EXPECT_EQ(rl::resume(stopped, e.task, resumed).timesteps, 900);
+  resumed.stop_at.reset();
+  ASSERT_TRUE(rl::resume(stopped, e.task, resumed).finished);
+  testing::expect_same_run(stopped, whole, {"model.policy", "safety.critic", "eval.csv"});
+  double interventions_before_pause = 0.0;
+  for (const auto& [key, value] : testing::event_scalars(whole)) {
+    if (key.first == "safety/intervention_rate" && key.second <= 900) {
+      interventions_before_pause += value;
+    }
+  }
+  EXPECT_GT(interventions_before_pause, 0.0);
 }
 
 // The reward-penalty baseline is a plain run (no safety agent): evaluated unfiltered, with the

@@ -125,7 +125,25 @@ bool Algorithm::checkpoints_hold_environments() const {
   return !needs_reset_ && env_.supports_snapshots();
 }
 
-void Algorithm::save(const std::filesystem::path& file, const Labels& labels) const {
+void Algorithm::save(const std::filesystem::path& file, const Labels& labels,
+                     const ExtraWriter& extra) const {
+  ArchiveWriter writer = checkpoint_writer(labels);
+  if (extra) extra(writer);
+  writer.commit(file);
+}
+
+std::string Algorithm::checkpoint_bytes() const { return checkpoint_writer({}).serialize(); }
+
+void Algorithm::load(const std::filesystem::path& file, const Labels& expected,
+                     const ExtraReader& read_extra) {
+  load_checkpoint(ArchiveReader(file, "checkpoint"), expected, read_extra);
+}
+
+void Algorithm::load_checkpoint_bytes(std::string bytes, const std::string& name) {
+  load_checkpoint(ArchiveReader::from_bytes(std::move(bytes), "checkpoint", name), {}, {});
+}
+
+ArchiveWriter Algorithm::checkpoint_writer(const Labels& labels) const {
   ArchiveWriter writer("checkpoint");
   for (const auto& [key, value] : labels) writer.put("label/" + key, value);
   writer.put("format", kCheckpointFormat);
@@ -150,11 +168,11 @@ void Algorithm::save(const std::filesystem::path& file, const Labels& labels) co
                                              static_cast<std::size_t>(last_observations_.size())));
   }
   write_state(writer);
-  writer.commit(file);
+  return writer;
 }
 
-void Algorithm::load(const std::filesystem::path& file, const Labels& expected) {
-  const ArchiveReader reader(file, "checkpoint");
+void Algorithm::load_checkpoint(const ArchiveReader& reader, const Labels& expected,
+                                const ExtraReader& read_extra) {
   const std::string& where = reader.name();
   const int64_t format = reader.get_int("format");
   if (format != kCheckpointFormat) {
@@ -200,6 +218,7 @@ void Algorithm::load(const std::filesystem::path& file, const Labels& expected) 
         Eigen::Map<const envs::BatchMatrix>(values.data(), env_.num_envs(), observations.size());
   }
   const std::function<void()> install_state = read_state(reader);
+  const std::function<void()> install_extra = read_extra ? read_extra(reader) : nullptr;
 
   // Every read succeeded. The vector env goes first: if its snapshot does not fit, nothing of
   // the algorithm has changed (the environments then need a reset).
@@ -221,6 +240,7 @@ void Algorithm::load(const std::filesystem::path& file, const Labels& expected) 
   iterations_ = iterations;
   install_episodes();
   install_state();
+  if (install_extra) install_extra();
   needs_reset_ = !(environments_restored && last_observations.size() > 0);
   if (!needs_reset_) last_observations_ = std::move(last_observations);
 }

@@ -55,9 +55,21 @@ class Algorithm {
   // and changes nothing on any error. `labels` tie a checkpoint to what surrounds it (the
   // trainer's run identity and replay-buffer checksum): `load` requires every expected label to
   // be stored with the same value.
+  //
+  // `extra` adds the state of what trains beside the algorithm (rl/run_companion) to the same
+  // file; `read_extra` reads it back and returns the action that installs it (run after the
+  // algorithm's own state is installed).
   using Labels = std::vector<std::pair<std::string, std::string>>;
-  void save(const std::filesystem::path& file, const Labels& labels = {}) const;
-  void load(const std::filesystem::path& file, const Labels& expected = {});
+  using ExtraWriter = std::function<void(ArchiveWriter&)>;
+  using ExtraReader = std::function<std::function<void()>(const ArchiveReader&)>;
+  void save(const std::filesystem::path& file, const Labels& labels = {},
+            const ExtraWriter& extra = {}) const;
+  void load(const std::filesystem::path& file, const Labels& expected = {},
+            const ExtraReader& read_extra = {});
+  // A checkpoint as bytes and back, for one nested in another (a co-trained agent's state in
+  // its run's checkpoint); `name` stands for the file in messages.
+  std::string checkpoint_bytes() const;
+  void load_checkpoint_bytes(std::string bytes, const std::string& name);
   // Whether the next checkpoint will hold the environments (all support snapshots and they
   // have been reset). When not, whoever checkpoints calls request_seeded_reset() right after,
   // so that a run resumed from the checkpoint (which must reset them) and the uninterrupted
@@ -94,6 +106,10 @@ class Algorithm {
   // of the checkpoint succeeded).
   virtual void write_state(ArchiveWriter& writer) const = 0;
   virtual std::function<void()> read_state(const ArchiveReader& reader) = 0;
+
+  ArchiveWriter checkpoint_writer(const Labels& labels) const;
+  void load_checkpoint(const ArchiveReader& reader, const Labels& expected,
+                       const ExtraReader& read_extra);
 
   envs::VecEnv& env() { return env_; }
   const envs::VecEnv& env() const { return env_; }

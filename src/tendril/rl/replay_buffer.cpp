@@ -94,6 +94,14 @@ void ReplayBuffer::sample(int64_t batch_size, Rng& rng, Batch& batch) const {
 }
 
 uint32_t ReplayBuffer::save(const std::filesystem::path& file) const {
+  const std::string bytes = serialize();
+  write_file_atomically(file, bytes, "replay buffer");
+  uint32_t checksum = 0;
+  std::memcpy(&checksum, bytes.data() + bytes.size() - sizeof checksum, sizeof checksum);
+  return checksum;
+}
+
+std::string ReplayBuffer::serialize() const {
   std::string bytes(kMagic, sizeof kMagic);
   const int64_t header[kHeaderWords] = {kFormat,       capacity_, observation_size(),
                                         action_size(), size_,     position_};
@@ -107,8 +115,7 @@ uint32_t ReplayBuffer::save(const std::filesystem::path& file) const {
                static_cast<std::size_t>(size_) * sizeof(float));
   const uint32_t checksum = crc32c(bytes.data() + sizeof kMagic, bytes.size() - sizeof kMagic);
   bytes.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
-  write_file_atomically(file, bytes, "replay buffer");
-  return checksum;
+  return bytes;
 }
 
 uint32_t replay_buffer_checksum(const std::filesystem::path& file) {
@@ -138,8 +145,12 @@ void ReplayBuffer::load(const std::filesystem::path& file) {
                              sizeof(float);
   require(!error && static_cast<double>(file_bytes) <= largest,
           "replay buffer file is larger than a buffer of this capacity", where);
-  const std::string bytes((std::istreambuf_iterator<char>(stream)),
-                          std::istreambuf_iterator<char>());
+  load_bytes(
+      std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>()),
+      where);
+}
+
+void ReplayBuffer::load_bytes(const std::string& bytes, const std::string& where) {
   const std::size_t header_bytes = sizeof kMagic + kHeaderWords * sizeof(int64_t);
   require(bytes.size() >= header_bytes + sizeof(uint32_t) &&
               std::memcmp(bytes.data(), kMagic, sizeof kMagic) == 0,

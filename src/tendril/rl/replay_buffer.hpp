@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "tendril/core/rng.hpp"
 
@@ -55,6 +56,9 @@ class ReplayBuffer {
   // unchanged. `save` returns the checksum it stored.
   uint32_t save(const std::filesystem::path& file) const;
   void load(const std::filesystem::path& file);
+  // The bytes `save` writes, and back (`where` names their source in messages).
+  std::string serialize() const;
+  void load_bytes(const std::string& bytes, const std::string& where);
 
  private:
   int64_t capacity_ = 0;

@@ -111,8 +111,11 @@ class Run {
         directory_(std::move(directory)),
         options_(options),
         lock_(std::move(lock)),
-        env_(make_vec_env(experiment.env)),
+        companion_(options.companion ? options.companion() : nullptr),
+        env_(companion_ ? companion_->attach(make_vec_env(experiment.env))
+                        : make_vec_env(experiment.env)),
         algorithm_(make_algorithm(experiment, *env_)) {
+    if (companion_) companion_->bind(*algorithm_);
     fs::create_directories(directory_ / "checkpoints");
     const std::string identity = run_identity(directory_);
     if (resuming) restore_newest_usable(identity);
@@ -121,15 +124,20 @@ class Run {
     evaluation_.emplace(experiment_, directory_, *algorithm_, *env_, resuming);
     evaluation_->report_to(&*log_);
     checkpoints_.emplace(experiment_, directory_, *algorithm_, options_.stop_at, identity);
+    log_->add_scalars_of(companion_.get());
+    checkpoints_->carry(companion_.get());
     progress_line_.emplace(experiment_.n_timesteps, first_step);
   }
 
   TrainResult execute() {
     const auto start = Clock::now();
     const int64_t first_step = algorithm_->num_timesteps();
-    Observers observers{&*log_, &*evaluation_, &*checkpoints_};
+    Observers observers;
+    if (companion_) observers.push_back(companion_.get());
+    observers.insert(observers.end(), {&*log_, &*evaluation_, &*checkpoints_});
     if (!options_.quiet) observers.push_back(&*progress_line_);
     algorithm_->learn(experiment_.n_timesteps, observers);
+    if (companion_) companion_->unbind(*algorithm_);
     if (!options_.quiet) progress_line_->finish();
 
     TrainResult result;
@@ -141,8 +149,10 @@ class Run {
       const envs::RunResult final_eval = evaluation_->evaluate(result.timesteps);
       result.final_eval_mean = final_eval.mean_return();
       result.final_eval_std = final_eval.std_return();
+      if (companion_) companion_->finish(directory_);
       algorithm_->save_policy(directory_ / "model.policy");
     }
+    if (companion_) companion_->add_scalars(result.companion_scalars);
     if (evaluation_->best_mean()) {
       result.best_eval_mean = evaluation_->best_mean();
       result.best_eval_timesteps = evaluation_->best_timesteps();
@@ -164,7 +174,19 @@ class Run {
         const uint32_t buffer = replay_buffer_checksum(buffer_path(file));
         expected.emplace_back("replay_buffer", checksum_text(buffer));
       }
-      algorithm_->load(file, expected);
+      if (companion_) expected.emplace_back("companion", companion_->name());
+      const Algorithm::ExtraReader read_companion =
+          [this](const ArchiveReader& reader) -> std::function<void()> {
+        if (companion_) return companion_->load(reader);
+        if (reader.contains("label/companion")) {
+          throw Error("holds the state of a " + reader.get_string("label/companion") +
+                          " trained beside the algorithm; resume it with what trains that too "
+                          "(tendril resume reads it from the run's config.yaml)",
+                      reader.name());
+        }
+        return nullptr;
+      };
+      algorithm_->load(file, expected, read_companion);
       if (with_buffer) algorithm_->load_replay_buffer(buffer_path(file));
     };
     std::vector<std::string> skipped;
@@ -190,6 +212,8 @@ class Run {
   fs::path directory_;
   TrainOptions options_;
   RunLock lock_;  // held for the run's lifetime
+  // Before the env: a wrapper in env_ may borrow what the companion owns.
+  std::unique_ptr<RunCompanion> companion_;
   std::unique_ptr<envs::VecEnv> env_;
   std::unique_ptr<Algorithm> algorithm_;
   std::optional<ScalarLogObserver> log_;
@@ -268,13 +292,21 @@ fs::path default_run_directory(const Experiment& experiment) {
   return experiment.output + "-seed" + std::to_string(experiment.seed) + "-" + stamp;
 }
 
-TrainResult train(const Experiment& experiment, const fs::path& run_directory,
-                  const TrainOptions& options) {
-  const std::string where = run_directory.string();
-  // A pause lands on a checkpoint: without checkpoints it would never come.
+namespace {
+
+// A pause lands on a checkpoint: without checkpoints it would never come.
+void require_checkpoints_for_pause(const Experiment& experiment, const TrainOptions& options) {
   require(!options.stop_at || experiment.checkpoint_freq > 0,
           "needs checkpoints to pause at: set checkpoint_freq (e.g. --set checkpoint_freq=100000)",
           "--stop-at");
+}
+
+}  // namespace
+
+TrainResult train(const Experiment& experiment, const fs::path& run_directory,
+                  const TrainOptions& options) {
+  const std::string where = run_directory.string();
+  require_checkpoints_for_pause(experiment, options);
   require(!run_directory.empty(), "the run directory needs a name", "--out");
   std::error_code error;
   fs::create_directories(run_directory, error);
@@ -306,6 +338,11 @@ TrainResult train(const Experiment& experiment, const fs::path& run_directory,
 
 Experiment load_run_experiment(const fs::path& run_directory,
                                const std::vector<std::pair<std::string, std::string>>& overrides) {
+  return Experiment::from_config(load_run_config(run_directory, overrides));
+}
+
+Config load_run_config(const fs::path& run_directory,
+                       const std::vector<std::pair<std::string, std::string>>& overrides) {
   const fs::path file = run_directory / "config.yaml";
   require(fs::exists(file), "not a run directory (no config.yaml)", run_directory.string());
   Config config = Config::load_file(file);  // bounded, and refuses what is not a file
@@ -321,13 +358,19 @@ Experiment load_run_experiment(const fs::path& run_directory,
     }
   }
   for (const auto& [key, value] : overrides) config.set(key, value);
-  return Experiment::from_config(config);
+  return config;
 }
 
 TrainResult resume(const fs::path& run_directory, const TrainOptions& options) {
   const fs::path config_file = run_directory / "config.yaml";
   if (!fs::exists(config_file))
     throw Error("not a run directory (no config.yaml)", run_directory.string());
+  return resume(run_directory, load_run_experiment(run_directory), options);
+}
+
+TrainResult resume(const fs::path& run_directory, const Experiment& experiment,
+                   const TrainOptions& options) {
+  require_checkpoints_for_pause(experiment, options);
   RunLock lock(run_directory);
   if (fs::exists(run_directory / "model.policy")) {
     throw Error(
@@ -335,7 +378,6 @@ TrainResult resume(const fs::path& run_directory, const TrainOptions& options) {
         "was changed; start a new run to train longer",
         run_directory.string());
   }
-  const Experiment experiment = load_run_experiment(run_directory);
   return run(experiment, run_directory, options, std::move(lock), /*resuming=*/true);
 }
 

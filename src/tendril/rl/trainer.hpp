@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tendril/rl/experiment.hpp"
+#include "tendril/rl/run_companion.hpp"
 
 namespace tendril::rl {
 
@@ -37,6 +38,9 @@ struct TrainOptions {
   // `train` into a directory that holds an earlier start of the same experiment (the same
   // config.yaml) that never reached a checkpoint: start it again instead of refusing.
   bool restart_unstarted = false;
+  // What trains beside the algorithm from its steps (a co-trained safety agent, a cost
+  // critic); made once per process, carried in every checkpoint. None when unset.
+  CompanionFactory companion = nullptr;
 };
 
 struct TrainResult {
@@ -50,6 +54,7 @@ struct TrainResult {
   double seconds = 0.0;
   double steps_per_second = 0.0;
   int interrupted = 0;  // the signal that stopped the run early (a checkpoint holds its state)
+  TrainStats companion_scalars;  // the companion's scalars at the end (RunCompanion::add_scalars)
 };
 
 // The directory a run of `experiment` gets when none is named: <output>-seed<N>-<time stamp>, so
@@ -69,6 +74,14 @@ TrainResult train(const Experiment& experiment, const std::filesystem::path& run
 // `step_<N>.ckpt.corrupt`, and the newest intact one is used. A finished run (model.policy
 // present) is refused and left unchanged.
 TrainResult resume(const std::filesystem::path& run_directory, const TrainOptions& options = {});
+// The same with the run's experiment already read (load_run_config, then whatever reads the
+// sections Experiment does not know, e.g. a co-trained safety agent's).
+TrainResult resume(const std::filesystem::path& run_directory, const Experiment& experiment,
+                   const TrainOptions& options);
+
+// A run's config.yaml, its checksum verified, with `overrides` (key=value) applied.
+Config load_run_config(const std::filesystem::path& run_directory,
+                       const std::vector<std::pair<std::string, std::string>>& overrides = {});
 
 // The experiment of a run, from its config.yaml (which ends with a comment holding its CRC-32C:
 // a damaged or edited file raises Error instead of resuming or evaluating another experiment).

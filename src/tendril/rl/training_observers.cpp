@@ -85,6 +85,11 @@ bool ScalarLogObserver::on_iteration(const Progress& p) {
   if (p.success_rate) log_.record("rollout/success_rate", *p.success_rate);
   if (p.curriculum_level) log_.record("rollout/curriculum_level", *p.curriculum_level);
   for (const auto& [name, value] : p.train) log_.record(name, value);
+  if (companion_ != nullptr) {
+    TrainStats extra;
+    companion_->add_scalars(extra);
+    for (const auto& [name, value] : extra) log_.record(name, value);
+  }
   log_.dump(p.timesteps);
   return true;
 }
@@ -265,7 +270,12 @@ void CheckpointObserver::save(int64_t timesteps) {
     labels.emplace_back("replay_buffer", checksum_text(checksum));
   }
   const bool holds_environments = algorithm_.checkpoints_hold_environments();
-  algorithm_.save(checkpoint, labels);
+  Algorithm::ExtraWriter extra;
+  if (companion_ != nullptr) {
+    labels.emplace_back("companion", companion_->name());
+    extra = [this](ArchiveWriter& writer) { companion_->save(writer); };
+  }
+  algorithm_.save(checkpoint, labels, extra);
   // Without the environments in the checkpoint, a resumed run restarts them here: so does
   // this one, and both compute the same.
   if (!holds_environments) algorithm_.request_seeded_reset();

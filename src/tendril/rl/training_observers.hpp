@@ -9,6 +9,7 @@
 #include "tendril/envs/runner/policy_runner.hpp"
 #include "tendril/rl/algorithm.hpp"
 #include "tendril/rl/experiment.hpp"
+#include "tendril/rl/run_companion.hpp"
 
 namespace tendril::rl {
 
@@ -24,9 +25,13 @@ class ScalarLogObserver : public Observer {
   // An evaluation into the event file under SB3's EvalCallback names: eval/mean_reward,
   // eval/mean_ep_length and, for envs that report success, eval/success_rate.
   void log_evaluation(int64_t timesteps, const envs::RunResult& evaluation);
+  // Scalars of what trains beside the algorithm, appended to every iteration's (none when
+  // null).
+  void add_scalars_of(RunCompanion* companion) { companion_ = companion; }
 
  private:
   ScalarLog log_;
+  RunCompanion* companion_ = nullptr;
   std::chrono::steady_clock::time_point start_;
   int64_t first_step_;
 };
@@ -80,9 +85,12 @@ class CheckpointObserver : public Observer {
                      std::string run_identity);
   bool on_iteration(const Progress& progress) override;
   int interrupted() const { return interrupted_; }
+  // What trains beside the algorithm goes into every checkpoint too (none when null).
+  void carry(const RunCompanion* companion) { companion_ = companion; }
 
  private:
   void save(int64_t timesteps);
+  const RunCompanion* companion_ = nullptr;
 
   const Experiment& experiment_;
   std::filesystem::path directory_;

@@ -1,6 +1,9 @@
 #include "tendril/safety/co_trainer.hpp"
 
 #include <algorithm>
+#include <cstddef>
+#include <span>
+#include <sstream>
 
 #include "tendril/core/error.hpp"
 
@@ -88,6 +91,64 @@ void SafetyCoTrainer::on_step(const rl::StepEvent& event) {
         1.0);
     last_stats_ = agent_.train_on(buffer_, settings_.gradient_steps, remaining);
   }
+}
+
+void SafetyCoTrainer::save(ArchiveWriter& writer, const std::string& prefix) const {
+  writer.put_bytes(prefix + "buffer", std::as_bytes(std::span<const char>(buffer_.serialize())));
+  writer.put_rng(prefix + "rng", rng_);
+  writer.put_bytes(prefix + "gates", std::as_bytes(std::span<const uint8_t>(gate_open_)));
+  writer.put(prefix + "steps", steps_);
+  writer.put(prefix + "stored", stored_);
+  writer.put(prefix + "gated", gated_);
+  writer.put(prefix + "unsafe_entries", unsafe_entries_);
+  std::string names;
+  std::vector<double> values;
+  for (const auto& [name, value] : last_stats_) {
+    names += name + "\n";
+    values.push_back(value);
+  }
+  writer.put(prefix + "stat_names", names);
+  writer.put_doubles(prefix + "stat_values", values);
+}
+
+std::function<void()> SafetyCoTrainer::prepare_load(const ArchiveReader& reader,
+                                                    const std::string& prefix) {
+  const std::string where = reader.name() + " (" + prefix + ")";
+  const Snapshot buffer_bytes = reader.get_bytes(prefix + "buffer");
+  auto buffer = std::make_shared<rl::ReplayBuffer>(buffer_.capacity(), buffer_.observation_size(),
+                                                   buffer_.action_size());
+  buffer->load_bytes(
+      std::string(reinterpret_cast<const char*>(buffer_bytes.data()), buffer_bytes.size()), where);
+  const Rng rng = reader.get_rng(prefix + "rng");
+  const Snapshot gate_bytes = reader.get_bytes(prefix + "gates");
+  std::vector<uint8_t> gates(gate_bytes.size());
+  for (std::size_t i = 0; i < gates.size(); ++i) {
+    gates[i] = static_cast<uint8_t>(gate_bytes[i]);
+    require(gates[i] <= 1, "a gate is neither open nor closed", where);
+  }
+  const int64_t steps = reader.get_int(prefix + "steps");
+  const int64_t stored = reader.get_int(prefix + "stored");
+  const int64_t gated = reader.get_int(prefix + "gated");
+  const int64_t unsafe_entries = reader.get_int(prefix + "unsafe_entries");
+  require(steps >= 0 && stored >= 0 && gated >= 0 && unsafe_entries >= 0, "negative counts", where);
+  std::istringstream names(reader.get_string(prefix + "stat_names"));
+  const std::vector<double> values = reader.get_doubles(prefix + "stat_values");
+  rl::TrainStats stats;
+  for (std::string name; std::getline(names, name);) {
+    require(stats.size() < values.size(), "more scalar names than values", where);
+    stats.emplace_back(name, values[stats.size()]);
+  }
+  require(stats.size() == values.size(), "more scalar values than names", where);
+  return [this, buffer, rng, gates, steps, stored, gated, unsafe_entries, stats] {
+    buffer_ = std::move(*buffer);
+    rng_ = rng;
+    gate_open_ = gates;
+    steps_ = steps;
+    stored_ = stored;
+    gated_ = gated;
+    unsafe_entries_ = unsafe_entries;
+    last_stats_ = stats;
+  };
 }
 
 }  // namespace tendril::safety

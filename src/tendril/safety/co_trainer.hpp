@@ -1,8 +1,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
+#include "tendril/core/archive.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/rl/observer.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
@@ -51,6 +54,12 @@ class SafetyCoTrainer : public rl::Observer {
   int64_t gated_transitions() const { return gated_; }  // seen while the gate was closed
   int64_t unsafe_entries() const { return unsafe_entries_; }
   const rl::TrainStats& last_stats() const { return last_stats_; }
+
+  // Its state — the gated buffer, its draws, the gates, the counts and the last update's
+  // scalars — in and out of a checkpoint under `prefix`. `prepare_load` reads and checks
+  // everything and returns the action that installs it.
+  void save(ArchiveWriter& writer, const std::string& prefix) const;
+  std::function<void()> prepare_load(const ArchiveReader& reader, const std::string& prefix);
 
  private:
   void store(const Eigen::Ref<const Eigen::VectorXf>& observation, const Action& action,

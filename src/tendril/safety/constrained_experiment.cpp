@@ -1,13 +1,13 @@
 #include "tendril/safety/constrained_experiment.hpp"
 
-#include <chrono>
+#include <memory>
+#include <optional>
 
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/sac/sac.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
-#include "tendril/safety/run_files.hpp"
 
 namespace tendril::safety {
 
@@ -38,37 +38,66 @@ ConstrainedExperiment ConstrainedExperiment::from_config(Config config) {
   return e;
 }
 
-ConstrainedTrainResult train_constrained(const ConstrainedExperiment& experiment,
-                                         const std::filesystem::path& run_directory, bool quiet) {
-  start_run_directory(run_directory, experiment.task.config);
-  const auto start = std::chrono::steady_clock::now();
-  const rl::Experiment& task_experiment = experiment.task;
-  auto env = rl::make_vec_env(task_experiment.env);
-  auto task = rl::make_algorithm(task_experiment, *env);
-  auto& sac = dynamic_cast<rl::Sac&>(*task);
-  CostCritic cost_critic(sac.policy(), experiment.cost_critic, task_experiment.seed + 1);
-  LagrangianPenalty penalty(cost_critic, experiment.cost_limit, experiment.multiplier,
-                            task_experiment.n_timesteps);
-  sac.set_actor_penalty(&penalty);
-  RunScalarLog log(run_directory, [&](rl::TrainStats& stats) {
-    stats.emplace_back("lagrangian/multiplier", penalty.multiplier());
-    stats.emplace_back("lagrangian/cost_value", penalty.last_cost_value());
-    stats.emplace_back("lagrangian/cost_critic_loss", cost_critic.last_loss());
-  });
-  rl::ProgressLine progress_line(task_experiment.n_timesteps, 0);
-  rl::Observers observers{&cost_critic, &penalty, &log};
-  if (!quiet) observers.push_back(&progress_line);
-  sac.learn(task_experiment.n_timesteps, observers);
-  if (!quiet) progress_line.finish();
-  sac.set_actor_penalty(nullptr);
-  task->policy().save(run_directory / "model.policy");
+namespace {
 
-  ConstrainedTrainResult result;
-  result.run_directory = run_directory;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.final_multiplier = penalty.multiplier();
-  result.final_cost_value = penalty.last_cost_value();
-  return result;
+class ConstrainedBaseline : public rl::RunCompanion {
+ public:
+  explicit ConstrainedBaseline(const ConstrainedExperiment& experiment) : experiment_(experiment) {}
+
+  std::string name() const override { return experiment_.method + " baseline"; }
+
+  void bind(rl::Algorithm& algorithm) override {
+    auto& sac = dynamic_cast<rl::Sac&>(algorithm);
+    cost_critic_.emplace(sac.policy(), experiment_.cost_critic, experiment_.task.seed + 1);
+    penalty_.emplace(*cost_critic_, experiment_.cost_limit, experiment_.multiplier,
+                     experiment_.task.n_timesteps);
+    sac.set_actor_penalty(&*penalty_);
+  }
+  void unbind(rl::Algorithm& algorithm) override {
+    dynamic_cast<rl::Sac&>(algorithm).set_actor_penalty(nullptr);
+  }
+
+  void on_step(const rl::StepEvent& event) override {
+    cost_critic_->on_step(event);
+    penalty_->on_step(event);
+  }
+  void add_scalars(rl::TrainStats& stats) override {
+    stats.emplace_back("lagrangian/multiplier", penalty_->multiplier());
+    stats.emplace_back("lagrangian/cost_value", penalty_->last_cost_value());
+    stats.emplace_back("lagrangian/cost_critic_loss", cost_critic_->last_loss());
+  }
+
+  void save(ArchiveWriter& writer) const override {
+    cost_critic_->save(writer, "constrained/cost_critic/");
+    penalty_->save(writer, "constrained/penalty/");
+  }
+  std::function<void()> load(const ArchiveReader& reader) override {
+    std::function<void()> install_critic =
+        cost_critic_->prepare_load(reader, "constrained/cost_critic/");
+    std::function<void()> install_penalty = penalty_->prepare_load(reader, "constrained/penalty/");
+    return [install_critic, install_penalty] {
+      install_critic();
+      install_penalty();
+    };
+  }
+
+ private:
+  const ConstrainedExperiment& experiment_;
+  std::optional<CostCritic> cost_critic_;
+  std::optional<LagrangianPenalty> penalty_;
+};
+
+}  // namespace
+
+rl::CompanionFactory constrained_baseline(const ConstrainedExperiment& experiment) {
+  return [&experiment] { return std::make_unique<ConstrainedBaseline>(experiment); };
+}
+
+rl::TrainResult train_constrained(const ConstrainedExperiment& experiment,
+                                  const std::filesystem::path& run_directory,
+                                  rl::TrainOptions options) {
+  options.companion = constrained_baseline(experiment);
+  return rl::train(experiment.task, run_directory, options);
 }
 
 }  // namespace tendril::safety

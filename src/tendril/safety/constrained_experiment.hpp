@@ -5,6 +5,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/rl/experiment.hpp"
+#include "tendril/rl/trainer.hpp"
 #include "tendril/safety/cost_critic.hpp"
 #include "tendril/safety/lagrangian_penalty.hpp"
 
@@ -24,8 +25,6 @@ namespace tendril::safety {
 //     cost_critic: {gamma: 0.9, net_arch: [64, 64], learning_rate: 3.0e-4, tau: 0.005,
 //                   buffer_size: 100000, batch_size: 128, learning_starts: 1000}
 //     multiplier: {initial: 1.0, learning_rate: 1.0e-3}   # rspo: {start: 100.0, end: 0.0}
-//
-// The cost critic is seeded with seed + 1.
 struct ConstrainedExperiment {
   rl::Experiment task;
   std::string method;
@@ -38,18 +37,17 @@ struct ConstrainedExperiment {
   static ConstrainedExperiment from_config(Config config);
 };
 
-struct ConstrainedTrainResult {
-  std::filesystem::path run_directory;
-  double seconds = 0.0;
-  double final_multiplier = 0.0;
-  double final_cost_value = 0.0;  // E[Q_risk(s, π(s))] of the last actor step
-};
+// The cost critic and multiplier of `experiment` as the companion of its SAC run (rl/trainer):
+// the penalty installed in SAC's actor loss, both learning from every step, carried in every
+// checkpoint (the run stops politely and resumes exactly), their scalars in progress.csv as
+// lagrangian/multiplier, lagrangian/cost_value and lagrangian/cost_critic_loss. The cost critic
+// is seeded with seed + 1; `experiment` must outlive the run.
+rl::CompanionFactory constrained_baseline(const ConstrainedExperiment& experiment);
 
-// Trains into `run_directory` (which must not exist or be empty): config.yaml, progress.csv and
-// the event file (with lagrangian/multiplier, lagrangian/cost_value and
-// lagrangian/cost_critic_loss), model.policy. A progress line unless `quiet`.
-ConstrainedTrainResult train_constrained(const ConstrainedExperiment& experiment,
-                                         const std::filesystem::path& run_directory,
-                                         bool quiet = false);
+// rl::train of the task experiment with that companion: config.yaml, progress.csv, the event
+// file, eval.csv, checkpoints/ and model.policy.
+rl::TrainResult train_constrained(const ConstrainedExperiment& experiment,
+                                  const std::filesystem::path& run_directory,
+                                  rl::TrainOptions options = {});
 
 }  // namespace tendril::safety

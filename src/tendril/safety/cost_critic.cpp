@@ -1,5 +1,9 @@
 #include "tendril/safety/cost_critic.hpp"
 
+#include <cstddef>
+#include <memory>
+#include <span>
+
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
 
@@ -109,6 +113,36 @@ void CostCritic::add_action_gradient(float weight, Eigen::Ref<Eigen::MatrixXf> a
   }
   critics_.backward(value_gradient_, /*parameters=*/false, &input_gradient_);
   action_gradient += input_gradient_.bottomRows(action_gradient.rows());
+}
+
+void CostCritic::save(ArchiveWriter& writer, const std::string& prefix) const {
+  critics_.save(writer, prefix + "critics");
+  const std::string buffer = buffer_.serialize();
+  writer.put_bytes(prefix + "buffer", std::as_bytes(std::span<const char>(buffer)));
+  writer.put_rng(prefix + "rng", rng_);
+  writer.put(prefix + "updates", updates_);
+  writer.put(prefix + "last_loss", last_loss_);
+}
+
+std::function<void()> CostCritic::prepare_load(const ArchiveReader& reader,
+                                               const std::string& prefix) {
+  std::function<void()> install_critics = critics_.prepare_load(reader, prefix + "critics");
+  const Snapshot bytes = reader.get_bytes(prefix + "buffer");
+  auto buffer = std::make_shared<rl::ReplayBuffer>(buffer_.capacity(), buffer_.observation_size(),
+                                                   buffer_.action_size());
+  buffer->load_bytes(std::string(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                     reader.name() + " (" + prefix + "buffer)");
+  const Rng rng = reader.get_rng(prefix + "rng");
+  const int64_t updates = reader.get_int(prefix + "updates");
+  require(updates >= 0, "a negative update count", reader.name());
+  const double last_loss = reader.get_double(prefix + "last_loss");
+  return [this, install_critics, buffer, rng, updates, last_loss] {
+    install_critics();
+    buffer_ = std::move(*buffer);
+    rng_ = rng;
+    updates_ = updates;
+    last_loss_ = last_loss;
+  };
 }
 
 }  // namespace tendril::safety

@@ -2,8 +2,11 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
+#include "tendril/core/archive.hpp"
 #include "tendril/core/config.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/rl/observer.hpp"
@@ -56,6 +59,11 @@ class CostCritic : public rl::Observer {
   const rl::ReplayBuffer& buffer() const { return buffer_; }
   int64_t updates() const { return updates_; }
   double last_loss() const { return last_loss_; }
+
+  // Its state — critics, targets, optimizer, buffer, draws, counts — in and out of a checkpoint
+  // under `prefix`; `prepare_load` reads and checks it and returns the action that installs it.
+  void save(ArchiveWriter& writer, const std::string& prefix) const;
+  std::function<void()> prepare_load(const ArchiveReader& reader, const std::string& prefix);
 
  private:
   void train();

@@ -24,9 +24,32 @@ const envs::BatchMatrix& FilteredVecEnv::reset(std::optional<uint64_t> seed) {
   return observations;
 }
 
+void FilteredVecEnv::save_state(SnapshotWriter& out, bool environments) const {
+  out.section("safety filter");
+  out.put(decisions_);
+  out.put(interventions_);
+  const bool with_observations = environments && observations_.rows() > 0;
+  out.put(with_observations);
+  if (with_observations) out.put_matrix(observations_);
+  inner_->save_state(out, environments);
+}
+
 bool FilteredVecEnv::load_state(SnapshotReader& in) {
-  observations_.resize(0, 0);
-  return inner_->load_state(in);
+  in.section("safety filter");
+  const int64_t decisions = in.get_int64();
+  const int64_t interventions = in.get_int64();
+  require(decisions >= 0 && interventions >= 0 && interventions <= decisions,
+          "inconsistent decision counts", "FilteredVecEnv");
+  envs::BatchMatrix observations;
+  if (in.get_bool()) {
+    observations.resize(num_envs(), observation_space().size());
+    in.get_matrix(observations);
+  }
+  const bool restored = inner_->load_state(in);
+  decisions_ = decisions;
+  interventions_ = interventions;
+  observations_ = restored ? std::move(observations) : envs::BatchMatrix();
+  return restored;
 }
 
 const envs::VecStep& FilteredVecEnv::step(const envs::BatchMatrix& actions) {

@@ -32,8 +32,9 @@ class FilteredVecEnv : public envs::VecEnvWrapper {
 
   const envs::BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) override;
   const envs::VecStep& step(const envs::BatchMatrix& actions) override;
-  // The filter keeps no state of its own; after restoring environments the next step needs a
-  // reset first (co-training runs are not resumed).
+  // Its counts and, with the environments, the observations the next decision reads, so that a
+  // resumed co-training run filters exactly as the uninterrupted one.
+  void save_state(SnapshotWriter& out, bool environments) const override;
   bool load_state(SnapshotReader& in) override;
 
   // The actions the environments executed on the last step (env units), and where the filter

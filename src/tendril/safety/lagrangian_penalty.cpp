@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tendril/core/error.hpp"
+#include "tendril/rl/adam_checkpoint.hpp"
 
 namespace tendril::safety {
 
@@ -72,6 +73,28 @@ double LagrangianPenalty::add_gradient(const Eigen::MatrixXf& observations,
     log_multiplier_[0] = std::clamp(log_multiplier_[0], -kLogMultiplierBound, kLogMultiplierBound);
   }
   return nu * (last_cost_value_ - cost_limit_);
+}
+
+void LagrangianPenalty::save(ArchiveWriter& writer, const std::string& prefix) const {
+  writer.put(prefix + "timesteps", timesteps_);
+  writer.put_floats(prefix + "log_multiplier", log_multiplier_);
+  rl::save_adam(writer, prefix + "adam", optimizer_);
+  writer.put(prefix + "last_cost_value", last_cost_value_);
+}
+
+std::function<void()> LagrangianPenalty::prepare_load(const ArchiveReader& reader,
+                                                      const std::string& prefix) {
+  const int64_t timesteps = reader.get_int(prefix + "timesteps");
+  require(timesteps >= 0, "a negative step count", reader.name());
+  const Eigen::VectorXf log_multiplier = reader.get_floats(prefix + "log_multiplier", 1);
+  std::function<void()> install_adam = rl::prepare_adam(reader, prefix + "adam", optimizer_, 1);
+  const double last_cost_value = reader.get_double(prefix + "last_cost_value");
+  return [this, timesteps, log_multiplier, install_adam, last_cost_value] {
+    timesteps_ = timesteps;
+    log_multiplier_ = log_multiplier;
+    install_adam();
+    last_cost_value_ = last_cost_value;
+  };
 }
 
 }  // namespace tendril::safety

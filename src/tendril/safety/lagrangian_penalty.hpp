@@ -2,8 +2,10 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <string>
 
+#include "tendril/core/archive.hpp"
 #include "tendril/core/config.hpp"
 #include "tendril/nn/adam.hpp"
 #include "tendril/rl/observer.hpp"
@@ -50,6 +52,11 @@ class LagrangianPenalty : public rl::ActorPenalty, public rl::Observer {
 
   double multiplier() const;
   double last_cost_value() const { return last_cost_value_; }  // E_s[Q_risk(s, π(s))]
+
+  // Its state — the step count, log ν and its optimizer, the last cost value — in and out of a
+  // checkpoint under `prefix` (as CostCritic's).
+  void save(ArchiveWriter& writer, const std::string& prefix) const;
+  std::function<void()> prepare_load(const ArchiveReader& reader, const std::string& prefix);
 
  private:
   CostCritic& critic_;

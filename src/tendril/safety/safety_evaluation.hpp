@@ -30,7 +30,8 @@ SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const T
 
 // The task experiment of a training config, read as its command reads it: a co-training
 // experiment (`safety:` section, SafetyExperiment) or a constrained baseline (`constrained:`,
-// ConstrainedExperiment) for `tendril train`'s safety and constrained experiments, a plain experiment otherwise.
+// ConstrainedExperiment) for `tendril train`'s safety and constrained experiments, a plain
+// experiment otherwise.
 rl::Experiment task_experiment_of_config(const Config& config);
 
 // The task experiment a run was trained with, from its config.yaml (a run of `tendril train` has

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstddef>
+#include <span>
 #include <vector>
 
 #include "tendril/core/error.hpp"
@@ -12,7 +14,6 @@
 #include "tendril/rl/sac/sac.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
-#include "tendril/safety/run_files.hpp"
 #include "tendril/safety/safety_critic.hpp"
 
 namespace tendril::safety {
@@ -53,8 +54,12 @@ std::unique_ptr<SafetyCritic> live_critic_of(const std::string& algorithm,
 // buffer and, with a training filter, the share of the iteration's decisions it overrode.
 class SafetyScalars {
  public:
+  // Counts the filter's decisions from where they stand (zero, or a resumed run's).
   SafetyScalars(const SafetyCoTrainer& co_trainer, const FilteredVecEnv* filtered)
-      : co_trainer_(co_trainer), filtered_(filtered) {}
+      : co_trainer_(co_trainer),
+        filtered_(filtered),
+        decisions_(filtered != nullptr ? filtered->decisions() : 0),
+        interventions_(filtered != nullptr ? filtered->interventions() : 0) {}
 
   void operator()(rl::TrainStats& stats) {
     for (const auto& [name, value] : co_trainer_.last_stats()) {
@@ -79,7 +84,87 @@ class SafetyScalars {
  private:
   const SafetyCoTrainer& co_trainer_;
   const FilteredVecEnv* filtered_;
-  int64_t decisions_ = 0, interventions_ = 0;
+  int64_t decisions_, interventions_;
+};
+
+// The co-trained safety agent as the companion of the task run. It builds, in the order the
+// seeds above assume: the safety agent on the run's environments, then (with a training filter)
+// the filter around them, then the co-trainer; the task agent is made on what `attach` returns.
+class SafetyCoTraining : public rl::RunCompanion {
+ public:
+  explicit SafetyCoTraining(const SafetyExperiment& experiment)
+      : experiment_(experiment), filter_rng_(experiment.task.seed + 3) {}
+
+  std::string name() const override { return "safety co-training"; }
+
+  std::unique_ptr<envs::VecEnv> attach(std::unique_ptr<envs::VecEnv> env) override {
+    const rl::Experiment& task = experiment_.task;
+    // The safety agent never steps the environments; it is built on them for their spaces.
+    agent_ = make_safety_agent(experiment_.safety_algorithm, experiment_.safety_algo, *env,
+                               task.seed + 1, "safety.algorithm");
+    single_ = envs::make(task.env.id, task.env.params);
+    constraint_ = constraint_of(*single_);
+    co_trainer_.emplace(dynamic_cast<rl::OffPolicyAlgorithm&>(*agent_), *constraint_,
+                        SafetyReward(experiment_.safety_gamma), experiment_.co_training,
+                        task.n_timesteps, task.seed + 2);
+    if (experiment_.training_filter) {
+      live_critic_ = live_critic_of(experiment_.safety_algorithm, *agent_);
+      auto wrapper = std::make_unique<FilteredVecEnv>(
+          std::move(env), *live_critic_,
+          [this](const Observation& x) {
+            return agent_->policy().act(x, /*deterministic=*/false, filter_rng_);
+          },
+          experiment_.training_filter_epsilon);
+      filtered_ = wrapper.get();
+      co_trainer_->learn_executed_actions_of(*filtered_);
+      env = std::move(wrapper);
+    }
+    scalars_.emplace(*co_trainer_, filtered_);
+    return env;
+  }
+
+  void on_step(const rl::StepEvent& event) override { co_trainer_->on_step(event); }
+  void add_scalars(rl::TrainStats& stats) override { (*scalars_)(stats); }
+
+  void save(ArchiveWriter& writer) const override {
+    const std::string agent = agent_->checkpoint_bytes();
+    writer.put_bytes("safety/agent", std::as_bytes(std::span<const char>(agent)));
+    co_trainer_->save(writer, "safety/co_trainer/");
+    writer.put_rng("safety/filter_rng", filter_rng_);
+  }
+
+  std::function<void()> load(const ArchiveReader& reader) override {
+    const Snapshot agent = reader.get_bytes("safety/agent");
+    // The agent's own checkpoint verifies and installs as a whole; should a later read fail,
+    // the trainer loads an older checkpoint, which installs it again.
+    agent_->load_checkpoint_bytes(
+        std::string(reinterpret_cast<const char*>(agent.data()), agent.size()),
+        reader.name() + " (safety agent)");
+    std::function<void()> install_co_trainer =
+        co_trainer_->prepare_load(reader, "safety/co_trainer/");
+    const Rng filter_rng = reader.get_rng("safety/filter_rng");
+    return [this, install_co_trainer, filter_rng] {
+      install_co_trainer();
+      filter_rng_ = filter_rng;
+      // The filter's counts come back with the environments' state; count from there.
+      scalars_.emplace(*co_trainer_, filtered_);
+    };
+  }
+
+  void finish(const std::filesystem::path& run_directory) const override {
+    critic_of(experiment_.safety_algorithm, *agent_)->save(run_directory / "safety.critic");
+  }
+
+ private:
+  const SafetyExperiment& experiment_;
+  std::unique_ptr<rl::Algorithm> agent_;
+  std::unique_ptr<Env> single_;
+  std::unique_ptr<Constraint> constraint_;
+  std::optional<SafetyCoTrainer> co_trainer_;
+  std::unique_ptr<SafetyCritic> live_critic_;
+  Rng filter_rng_;
+  FilteredVecEnv* filtered_ = nullptr;  // owned by the run's vector env
+  std::optional<SafetyScalars> scalars_;
 };
 
 }  // namespace
@@ -136,58 +221,15 @@ SafetyExperiment SafetyExperiment::from_config(Config config) {
   return e;
 }
 
-SafetyTrainResult train_with_safety(const SafetyExperiment& experiment,
-                                    const std::filesystem::path& run_directory, bool quiet) {
-  start_run_directory(run_directory, experiment.task.config);
-  const auto start = std::chrono::steady_clock::now();
-  const rl::Experiment& task_experiment = experiment.task;
-  std::unique_ptr<envs::VecEnv> env = rl::make_vec_env(task_experiment.env);
-  // The safety agent never steps the environments; it is built on them for their spaces.
-  auto safety_agent = make_safety_agent(experiment.safety_algorithm, experiment.safety_algo, *env,
-                                        task_experiment.seed + 1, "safety.algorithm");
-  auto& off_policy = dynamic_cast<rl::OffPolicyAlgorithm&>(*safety_agent);
-  std::unique_ptr<SafetyCritic> live_critic;
-  FilteredVecEnv* filtered = nullptr;
-  Rng filter_rng(task_experiment.seed + 3);
-  if (experiment.training_filter) {
-    live_critic = live_critic_of(experiment.safety_algorithm, *safety_agent);
-    const rl::Policy& safety_policy = safety_agent->policy();
-    auto wrapper = std::make_unique<FilteredVecEnv>(
-        std::move(env), *live_critic,
-        [&safety_policy, &filter_rng](const Observation& x) {
-          return safety_policy.act(x, /*deterministic=*/false, filter_rng);
-        },
-        experiment.training_filter_epsilon);
-    filtered = wrapper.get();
-    env = std::move(wrapper);
-  }
-  auto task = rl::make_algorithm(task_experiment, *env);
-  auto single = envs::make(task_experiment.env.id, task_experiment.env.params);
-  const auto constraint = constraint_of(*single);
-  SafetyCoTrainer co_trainer(off_policy, *constraint, SafetyReward(experiment.safety_gamma),
-                             experiment.co_training, task_experiment.n_timesteps,
-                             task_experiment.seed + 2);
-  if (filtered != nullptr) co_trainer.learn_executed_actions_of(*filtered);
-  RunScalarLog progress(run_directory, SafetyScalars(co_trainer, filtered));
-  rl::ProgressLine progress_line(task_experiment.n_timesteps, 0);
-  rl::Observers observers{&co_trainer, &progress};
-  if (!quiet) observers.push_back(&progress_line);
-  task->learn(task_experiment.n_timesteps, observers);
-  if (!quiet) progress_line.finish();
-  task->policy().save(run_directory / "model.policy");
-  critic_of(experiment.safety_algorithm, *safety_agent)->save(run_directory / "safety.critic");
+rl::CompanionFactory co_trained_safety_agent(const SafetyExperiment& experiment) {
+  return [&experiment] { return std::make_unique<SafetyCoTraining>(experiment); };
+}
 
-  SafetyTrainResult result;
-  result.run_directory = run_directory;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.stored_transitions = co_trainer.stored_transitions();
-  result.gated_transitions = co_trainer.gated_transitions();
-  result.unsafe_entries = co_trainer.unsafe_entries();
-  if (filtered != nullptr && filtered->decisions() > 0) {
-    result.training_intervention_rate =
-        static_cast<double>(filtered->interventions()) / static_cast<double>(filtered->decisions());
-  }
-  return result;
+rl::TrainResult train_with_safety(const SafetyExperiment& experiment,
+                                  const std::filesystem::path& run_directory,
+                                  rl::TrainOptions options) {
+  options.companion = co_trained_safety_agent(experiment);
+  return rl::train(experiment.task, run_directory, options);
 }
 
 }  // namespace tendril::safety

@@ -8,6 +8,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/rl/experiment.hpp"
+#include "tendril/rl/trainer.hpp"
 #include "tendril/safety/co_trainer.hpp"
 #include "tendril/safety/constraint.hpp"
 #include "tendril/safety/safety_filter.hpp"
@@ -39,7 +40,8 @@ namespace tendril::safety {
 // does not say which (§6.3.1); see configs/safety/ for the choice per environment.
 //
 // The safety agent is seeded with seed + 1, the co-trainer's draws with seed + 2, the filter's
-// draws with seed + 3.
+// draws with seed + 3. The run is the task experiment's (rl/trainer), so checkpoint_freq,
+// --stop-at, Ctrl-C and `tendril resume` work as for any run.
 struct SafetyExperiment {
   rl::Experiment task;
   std::string safety_algorithm;
@@ -57,22 +59,17 @@ struct SafetyExperiment {
   static SafetyExperiment from_config(Config config);
 };
 
-struct SafetyTrainResult {
-  std::filesystem::path run_directory;
-  double seconds = 0.0;
-  int64_t stored_transitions = 0;  // in the gated safety buffer
-  int64_t gated_transitions = 0;
-  int64_t unsafe_entries = 0;
-  double training_intervention_rate = 0.0;  // of the training filter's decisions (0 without)
-};
+// The co-trained safety agent of `experiment` as the companion of its task run (rl/trainer):
+// built on the run's environments, acting through the training filter when enabled, learning
+// from every step, carried in every checkpoint (so the run stops politely and resumes
+// exactly), and written as safety.critic (load_safety_critic) when the run finishes. Its
+// scalars join progress.csv as safety/...; `experiment` must outlive the run.
+rl::CompanionFactory co_trained_safety_agent(const SafetyExperiment& experiment);
 
-// Trains the task agent with the co-trained safety agent into `run_directory` (which must not
-// exist or be empty): config.yaml, progress.csv and the TensorBoard event file (the task
-// agent's scalars, Stable-Baselines3's names, and the safety agent's as safety/...),
-// model.policy (the task policy, rl::load_policy) and safety.critic (load_safety_critic).
-// A live progress line goes to standard error unless `quiet`. No checkpoints: a run is not
-// resumed.
-SafetyTrainResult train_with_safety(const SafetyExperiment& experiment,
-                                    const std::filesystem::path& run_directory, bool quiet = false);
+// rl::train of the task experiment with the co-trained safety agent: config.yaml,
+// progress.csv, the event file, eval.csv, checkpoints/, model.policy and safety.critic.
+rl::TrainResult train_with_safety(const SafetyExperiment& experiment,
+                                  const std::filesystem::path& run_directory,
+                                  rl::TrainOptions options = {});
 
 }  // namespace tendril::safety
