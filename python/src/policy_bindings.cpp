@@ -94,13 +94,84 @@ class PyPolicy {
   ObjectLock lock_;  // object_lock.hpp
 };
 
+// What a training on its worker thread has for Python — the progress line and, with a
+// callback, each iteration's report — kept under a lock until the thread that holds the GIL
+// passes them on: the line to sys.stderr (so Jupyter shows it), the reports to the callback.
+class ProgressRelay {
+ public:
+  explicit ProgressRelay(py::object callback) : callback_(std::move(callback)) {}
+
+  void connect(rl::TrainOptions& options) {
+    options.progress_output = [this](const std::string& text) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      text_ += text;
+    };
+    if (callback_.is_none()) return;
+    options.on_iteration = [this](const rl::Progress& progress) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      iterations_.push_back(progress);
+    };
+  }
+
+  // With the GIL held. A callback's exception propagates.
+  void deliver() {
+    std::string text;
+    std::vector<rl::Progress> iterations;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      text.swap(text_);
+      iterations.swap(iterations_);
+    }
+    if (!text.empty()) {
+      const py::object stderr_stream = py::module_::import("sys").attr("stderr");
+      stderr_stream.attr("write")(text);
+      stderr_stream.attr("flush")();
+    }
+    for (const rl::Progress& progress : iterations) callback_(progress_dict(progress));
+  }
+
+ private:
+  static py::dict progress_dict(const rl::Progress& p) {
+    py::dict report;
+    report["timesteps"] = p.timesteps;
+    report["iterations"] = p.iterations;
+    report["episodes"] = p.episodes;
+    if (p.episodes > 0) {
+      report["ep_rew_mean"] = p.episode_return_mean;
+      report["ep_len_mean"] = p.episode_length_mean;
+    }
+    if (p.success_rate) report["success_rate"] = *p.success_rate;
+    py::dict train;
+    for (const auto& [name, value] : p.train) train[py::str(name)] = value;
+    report["train"] = train;
+    return report;
+  }
+
+  py::object callback_;
+  std::mutex mutex_;
+  std::string text_;
+  std::vector<rl::Progress> iterations_;
+};
+
 // Runs `work` (a training, GIL-free) on a thread of its own while this thread, holding the GIL
 // between short waits, lets Python run its signal handlers: Ctrl-C raises KeyboardInterrupt
 // there, which becomes tendril's polite stop (core/interrupt.hpp) — the trainer writes a
 // checkpoint at the end of its iteration and returns. The KeyboardInterrupt is then raised with
 // where the run stands. Python handles signals in its main thread only; elsewhere this only waits.
+// Passes the relay's reports on; a callback that raises stops the training politely (its
+// exception is raised once the worker has returned).
+void deliver_or_stop(ProgressRelay& relay, std::optional<py::error_already_set>& raised) {
+  try {
+    relay.deliver();
+  } catch (py::error_already_set& error) {
+    if (raised) return;
+    raised.emplace(std::move(error));
+    request_interrupt(SIGINT);
+  }
+}
+
 rl::TrainResult train_interruptibly(const std::function<rl::TrainResult()>& work,
-                                    const std::string& resume_call) {
+                                    const std::string& resume_call, ProgressRelay& relay) {
   std::mutex mutex;
   std::condition_variable finished;
   bool done = false;
@@ -123,11 +194,13 @@ rl::TrainResult train_interruptibly(const std::function<rl::TrainResult()>& work
       std::unique_lock<std::mutex> lock(mutex);
       if (finished.wait_for(lock, std::chrono::milliseconds(100), [&] { return done; })) break;
     }
+    deliver_or_stop(relay, raised);
     if (!raised && PyErr_CheckSignals() != 0) {
       raised.emplace();  // takes the exception a signal handler raised
       request_interrupt(SIGINT);
     }
   }
+  deliver_or_stop(relay, raised);
   {
     py::gil_scoped_release release;
     worker.join();
@@ -181,7 +254,8 @@ void bind_train(py::module_& m) {
   m.def(
       "train",
       [](const std::filesystem::path& config_file, const std::vector<std::string>& overrides,
-         std::optional<std::filesystem::path> out, std::optional<int64_t> stop_at, bool quiet) {
+         std::optional<std::filesystem::path> out, std::optional<int64_t> stop_at, bool quiet,
+         py::object callback) {
         Config config = Config::load_file(config_file);
         for (const std::string& assignment : overrides) {
           const auto equals = assignment.find('=');
@@ -194,23 +268,30 @@ void bind_train(py::module_& m) {
         rl::TrainOptions options;
         options.stop_at = stop_at;
         options.quiet = quiet;
+        ProgressRelay relay(std::move(callback));
+        relay.connect(options);
         return train_summary(train_interruptibly(
-            [&] { return rl::train(experiment, run, options); }, "tendril.resume"));
+            [&] { return rl::train(experiment, run, options); }, "tendril.resume", relay));
       },
       py::arg("config_file"), py::arg("overrides") = std::vector<std::string>{},
       py::arg("out") = py::none(), py::arg("stop_at") = py::none(), py::arg("quiet") = false,
+      py::arg("callback") = py::none(),
       "Runs an experiment file in-process (tendril train), GIL released; Ctrl-C stops it at a "
       "checkpoint and raises KeyboardInterrupt.");
   m.def(
       "resume",
-      [](const std::filesystem::path& run, std::optional<int64_t> stop_at, bool quiet) {
+      [](const std::filesystem::path& run, std::optional<int64_t> stop_at, bool quiet,
+         py::object callback) {
         rl::TrainOptions options;
         options.stop_at = stop_at;
         options.quiet = quiet;
+        ProgressRelay relay(std::move(callback));
+        relay.connect(options);
         return train_summary(
-            train_interruptibly([&] { return rl::resume(run, options); }, "tendril.resume"));
+            train_interruptibly([&] { return rl::resume(run, options); }, "tendril.resume", relay));
       },
       py::arg("run_directory"), py::arg("stop_at") = py::none(), py::arg("quiet") = false,
+      py::arg("callback") = py::none(),
       "Continues a run from its newest checkpoint (tendril resume), GIL released.");
 }
 

@@ -177,3 +177,31 @@ def test_ctrl_c_stops_training_at_a_checkpoint(tmp_path):
     steps = int(out.split("training stopped at ")[1].split()[0])
     resumed = tendril.resume(run, stop_at=steps + 2048, quiet=True)
     assert os.path.samefile(resumed, run)
+
+
+def test_progress_goes_to_sys_stderr_and_the_callback_sees_every_iteration(tmp_path, capsys):
+    reports = []
+    tendril.train(PENDULUM, out=tmp_path / "watched", n_timesteps=4096, seed=2,
+                  algo__n_steps=256, checkpoint_freq=0, callback=reports.append)
+    err = capsys.readouterr().err  # Python's sys.stderr, which a notebook shows
+    assert "steps 4096/4096 (100.0%)" in err and "ETA" in err, err
+    # Four envs of 256 steps: 1024 steps per iteration, four reports, in order.
+    assert [r["timesteps"] for r in reports] == [1024, 2048, 3072, 4096]
+    assert reports[-1]["episodes"] > 0 and np.isfinite(reports[-1]["ep_rew_mean"])
+    assert "train/approx_kl" in reports[-1]["train"]
+
+
+def test_a_raising_callback_stops_the_run_at_a_checkpoint_and_propagates(tmp_path):
+    run = tmp_path / "stopped"
+
+    def stop_after_first(report):
+        raise RuntimeError(f"enough at {report['timesteps']}")
+
+    # Long enough (about 2 s) that the stop lands before the end.
+    with pytest.raises(RuntimeError, match="enough at 1024"):
+        tendril.train(PENDULUM, out=run, quiet=True, n_timesteps=200_000, seed=2,
+                      algo__n_steps=256, checkpoint_freq=0, callback=stop_after_first)
+    assert not (run / "model.policy").exists()
+    assert list((run / "checkpoints").glob("*.ckpt")), "no checkpoint written"
+    tendril.resume(run, quiet=True)
+    assert (run / "model.policy").exists()

@@ -126,7 +126,7 @@ class Run {
     checkpoints_.emplace(experiment_, directory_, *algorithm_, options_.stop_at, identity);
     log_->add_scalars_of(companion_.get());
     checkpoints_->carry(companion_.get());
-    progress_line_.emplace(experiment_.n_timesteps, first_step);
+    progress_line_.emplace(experiment_.n_timesteps, first_step, options_.progress_output);
   }
 
   TrainResult execute() {
@@ -136,6 +136,11 @@ class Run {
     if (companion_) observers.push_back(companion_.get());
     observers.insert(observers.end(), {&*log_, &*evaluation_, &*checkpoints_});
     if (!options_.quiet) observers.push_back(&*progress_line_);
+    IterationCallback monitor([this](const Progress& progress) {
+      options_.on_iteration(progress);
+      return true;
+    });
+    if (options_.on_iteration) observers.push_back(&monitor);
     algorithm_->learn(experiment_.n_timesteps, observers);
     if (companion_) companion_->unbind(*algorithm_);
     if (!options_.quiet) progress_line_->finish();

@@ -35,6 +35,10 @@ struct TrainOptions {
   // continues with `resume`). Unset: train to n_timesteps.
   std::optional<int64_t> stop_at;
   bool quiet = false;  // no progress line
+  // Where the progress line goes (standard error when unset), e.g. Python's sys.stderr.
+  std::function<void(const std::string&)> progress_output = nullptr;
+  // Called after every iteration with its progress (a monitor; it cannot stop the run).
+  std::function<void(const Progress&)> on_iteration = nullptr;
   // `train` into a directory that holds an earlier start of the same experiment (the same
   // config.yaml) that never reached a checkpoint: start it again instead of refusing.
   bool restart_unstarted = false;

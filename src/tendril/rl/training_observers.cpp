@@ -284,9 +284,11 @@ void CheckpointObserver::save(int64_t timesteps) {
   for (std::size_t i = 2; i < saved.size(); ++i) fs::remove(buffer_path(saved[i]));
 }
 
-ProgressLine::ProgressLine(int64_t total_timesteps, int64_t first_step)
+ProgressLine::ProgressLine(int64_t total_timesteps, int64_t first_step,
+                           std::function<void(const std::string&)> output)
     : total_timesteps_(total_timesteps),
       first_step_(first_step),
+      output_(std::move(output)),
       start_(Clock::now()),
       last_print_(start_) {}
 
@@ -299,7 +301,16 @@ bool ProgressLine::on_iteration(const Progress& progress) {
 
 void ProgressLine::finish() {
   if (last_) print(*last_);
-  std::fputc('\n', stderr);
+  write("\n");
+}
+
+void ProgressLine::write(const std::string& text) const {
+  if (output_) {
+    output_(text);
+    return;
+  }
+  std::fputs(text.c_str(), stderr);
+  std::fflush(stderr);
 }
 
 void ProgressLine::print(const Progress& p) {
@@ -308,12 +319,14 @@ void ProgressLine::print(const Progress& p) {
   const double fps =
       static_cast<double>(p.timesteps - first_step_) / std::max(seconds_between(start_, now), 1e-9);
   const double remaining = static_cast<double>(total_timesteps_ - p.timesteps) / fps;
-  std::fprintf(stderr, "\rsteps %lld/%lld (%.1f%%)  %.0f steps/s  ep_rew_mean %s  ETA %s   ",
-               static_cast<long long>(p.timesteps), static_cast<long long>(total_timesteps_),
-               100.0 * static_cast<double>(p.timesteps) / static_cast<double>(total_timesteps_),
-               fps, p.episodes > 0 ? std::to_string(p.episode_return_mean).c_str() : "-",
-               duration_text(std::max(remaining, 0.0)).c_str());
-  std::fflush(stderr);
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "\rsteps %lld/%lld (%.1f%%)  %.0f steps/s  ep_rew_mean %s  ETA %s   ",
+                static_cast<long long>(p.timesteps), static_cast<long long>(total_timesteps_),
+                100.0 * static_cast<double>(p.timesteps) / static_cast<double>(total_timesteps_),
+                fps, p.episodes > 0 ? std::to_string(p.episode_return_mean).c_str() : "-",
+                duration_text(std::max(remaining, 0.0)).c_str());
+  write(line);
 }
 
 }  // namespace tendril::rl

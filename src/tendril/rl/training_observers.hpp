@@ -3,7 +3,9 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
+#include <string>
 
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/envs/runner/policy_runner.hpp"
@@ -101,17 +103,21 @@ class CheckpointObserver : public Observer {
   int interrupted_ = 0;
 };
 
-// The live progress line on standard error: steps, steps/s, mean return, ETA.
+// The live progress line: steps, steps/s, mean return, ETA; on standard error, or to `output`
+// (e.g. Python's sys.stderr) when set.
 class ProgressLine : public Observer {
  public:
-  ProgressLine(int64_t total_timesteps, int64_t first_step);
+  ProgressLine(int64_t total_timesteps, int64_t first_step,
+               std::function<void(const std::string&)> output = nullptr);
   bool on_iteration(const Progress& progress) override;
   void finish();  // the last line, then a newline
 
  private:
   void print(const Progress& progress);
+  void write(const std::string& text) const;
 
   int64_t total_timesteps_, first_step_;
+  std::function<void(const std::string&)> output_;
   std::chrono::steady_clock::time_point start_, last_print_;
   std::optional<Progress> last_;
 };
