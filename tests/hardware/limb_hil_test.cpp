@@ -25,6 +25,7 @@ using envs::sma_limb::SmaLimbEnv;
 using testing::bridge_env_params;
 using testing::bridge_to;
 using testing::emulator_settings;
+using testing::EnvLimb;
 
 void expect_same_log(const envs::sma_limb::LimbLog& twin, const envs::sma_limb::LimbLog& bridge) {
   ASSERT_EQ(twin.size(), bridge.size());
@@ -109,33 +110,6 @@ TEST(LimbHil, AMinuteOfExplorationDataThroughTheFirmwareEqualsTheTwins) {
 }
 
 // The thesis' tracking loop (PID baseline along the circle) closed through the firmware.
-class EnvLimb final : public control::TrackedLimb {
- public:
-  explicit EnvLimb(Env& env) : env_(env) {}
-  control::LimbState reset() override { return state(env_.reset(3)); }
-  control::LimbState apply(const Eigen::Vector2d& throttles) override {
-    const Step step = env_.step(throttles.cast<float>());
-    info_ = step.info;
-    return state(step.observation);
-  }
-  const Info& info() const { return info_; }
-
- private:
-  control::LimbState state(const Observation& o) {
-    const Eigen::Vector2d angles(o[0], o[1]);
-    const double dt = o[2] - time_;
-    const Eigen::Vector2d rates =
-        dt > 0 ? ((angles - angles_) / dt).eval() : Eigen::Vector2d::Zero();
-    time_ = o[2];
-    angles_ = angles;
-    return {o[2], angles, rates};
-  }
-  Env& env_;
-  Info info_;
-  double time_ = 0.0;
-  Eigen::Vector2d angles_ = Eigen::Vector2d::Zero();
-};
-
 TEST(LimbHil, AClosedLoopControllerThroughTheFirmwareTracksAsOnTheTwin) {
   const Eigen::Matrix2Xd path = control::reference_pattern("circle");
   auto run_on = [&](Env& env, Info* info) {
