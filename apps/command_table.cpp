@@ -298,7 +298,11 @@ std::vector<CommandSpec> command_table() {
                   output("The errors as CSV (a new file)."),
                   {"open-loop-dir", "DIR",
                    "The model's open-loop response to the sine, square "
-                   "and sawtooth test inputs, one CSV each."}},
+                   "and sawtooth test inputs, one CSV each."},
+                  {"baselines", "",
+                   "Also the \"predict no change\" baseline on the same points (rows "
+                   "persistence_*), and the one-step errors of both within 3 readings of an "
+                   "input change and under steady input (*_input_change, *_steady_input)."}},
       .run = model_eval_command,
   });
 #endif
