@@ -27,15 +27,17 @@ def rows(path):
         return list(csv.DictReader(file))
 
 
-def sma_limb_rl_tracking():
-    """Tables 5.4-5.5: every row as summary.py builds it from tracking.csv."""
+def sma_limb_rl_tables():
+    """Tables 5.1, 5.4 and 5.5: every row as summary.py builds it from training_runs.csv and
+    tracking.csv."""
     script = os.path.join(RESULTS, "sma_limb_rl", "summary.py")
     done = subprocess.run([sys.executable, script, "tables",
-                           os.path.join(RESULTS, "sma_limb_rl", "tracking.csv")],
+                           os.path.join(RESULTS, "sma_limb_rl", "tracking.csv"),
+                           os.path.join(RESULTS, "sma_limb_rl", "training_runs.csv")],
                           capture_output=True, text=True, check=True)
     expected = [line for line in done.stdout.splitlines() if line.startswith("| ")]
-    assert len(expected) >= 18, done.stdout
-    return "sma_limb_rl.md", "sma_limb_rl/tracking.csv", expected
+    assert len(expected) >= 22, done.stdout
+    return ("sma_limb_rl.md", "sma_limb_rl/training_runs.csv and tracking.csv", expected)
 
 
 def safety_filter_limb():
@@ -101,7 +103,7 @@ def pneumatic_open_loop_spread():
             [f"({min(distances):.1f}–{max(distances):.1f} mm over the {len(distances)} trials"])
 
 
-CHECKS = (sma_limb_rl_tracking, safety_filter_limb, safety_filter_baselines,
+CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
           learned_dynamics_baselines, pneumatic_open_loop_spread)
 
 

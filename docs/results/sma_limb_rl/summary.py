@@ -17,7 +17,9 @@ when the path's first point was never reached).
 output): per controller and kind of action, each seed's RMSE ("*": the path was not finished,
 "n.r.": its first point never reached), the thesis' number in brackets, and per seed the mean of
 the averaged columns when that seed finished all of them ("—" otherwise).
-  /usr/bin/python3 docs/results/sma_limb_rl/summary.py tables docs/results/sma_limb_rl/tracking.csv
+With training_runs.csv (the `runs` output) as a second argument, Table 5.1's rows first.
+  /usr/bin/python3 docs/results/sma_limb_rl/summary.py tables docs/results/sma_limb_rl/tracking.csv \
+    docs/results/sma_limb_rl/training_runs.csv
 """
 import csv
 import os
@@ -101,6 +103,39 @@ def cell(entry):
         "" if finished == "yes" else "*")
 
 
+THESIS_5_1 = {"lk_encoder": ("LK Head (Encoder)", "1.00", "−1507.87"),
+              "lk_full": ("LK (Full)", "0.90", "−1794.63"),
+              "mlp_head": ("MLP Head", "0.00", "−7046.79"),
+              "no_head": ("MLP No Head", "0.76", "−2009.50")}
+
+
+def spread(values, digits):
+    """mean ± sample standard deviation as the page writes it (U+2212 for minus)."""
+    text = f"{statistics.mean(values):.{digits}f}"
+    if len(values) > 1:
+        text += f" ± {statistics.stdev(values):.{digits}f}"
+    return text.replace("-", "−")
+
+
+def table_5_1_rows(training_csv):
+    """Table 5.1's rows from training_runs.csv (its table51_<head>_seed<N> runs)."""
+    with open(training_csv, newline="") as file:
+        runs = [row for row in csv.DictReader(file) if row.get("seed")]
+    print("Table 5.1")
+    for key, (label, success, ret) in THESIS_5_1.items():
+        mine = sorted((row for row in runs if re.fullmatch(rf"table51_{key}_seed\d+", row["run"])),
+                      key=lambda row: int(row["seed"]))
+        if not mine:
+            continue
+        rates = [float(row["success_final"]) for row in mine]
+        seeds = ", ".join(f"{rate:.2f}" for rate in rates)
+        print(f"| {label} | {success} | {spread(rates, 2)} ({seeds}; {len(mine)} seeds) | {ret} | "
+              f"{spread([float(row['eval_return_final']) for row in mine], 0)} | "
+              f"{spread([float(row['train_return_final']) for row in mine], 0)} | "
+              + ", ".join(f"{float(row['wall_s']) / 60:.1f}" for row in mine) + " |")
+    print()
+
+
 def table_rows(tracking_csv):
     rows = read_rows(tracking_csv)
     results = {(row["log"], row["pattern"]): (row["finished"], row["rmse_deg"]) for row in rows}
@@ -148,4 +183,5 @@ if __name__ == "__main__":
     if len(sys.argv) < 3 or sys.argv[1] not in ("runs", "track", "tables"):
         raise SystemExit(__doc__)
     {"runs": summarize_runs, "track": summarize_tracking,
-     "tables": lambda args: table_rows(args[0])}[sys.argv[1]](sys.argv[2:])
+     "tables": lambda args: (table_5_1_rows(args[1]) if len(args) > 1 else None,
+                             table_rows(args[0]))}[sys.argv[1]](sys.argv[2:])
