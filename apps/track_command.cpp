@@ -21,6 +21,7 @@
 #include "tendril/data/prepare.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
+#include "tendril/envs/wrappers/wrapper.hpp"
 #ifdef TENDRIL_WITH_RL
 #include "policy_controller.hpp"
 #include "run_policy.hpp"
@@ -34,7 +35,7 @@ namespace {
 // estimate as the training data (data::StateFilter, thesis eqs. 4.5 and 4.7).
 class RobotLimb final : public control::TrackedLimb {
  public:
-  RobotLimb(envs::sma_limb::SmaLimbEnv& robot, uint64_t seed) : robot_(robot), seed_(seed) {}
+  RobotLimb(Env& robot, uint64_t seed) : robot_(robot), seed_(seed) {}
 
   control::LimbState reset() override {
     filter_.reset();
@@ -53,7 +54,7 @@ class RobotLimb final : public control::TrackedLimb {
     return control::LimbState{.time_s = reading[2], .angles = x.head<2>(), .rates = x.tail<2>()};
   }
 
-  envs::sma_limb::SmaLimbEnv& robot_;
+  Env& robot_;  // SmaLimb/Robot-v0, on the bridge inside its HardwareInfo wrapper
   uint64_t seed_;
   data::StateFilter filter_;
 };
@@ -128,8 +129,7 @@ int track_command(const Arguments& line) {
     params.set("tip_mass", mass);
     params.set("seed", std::to_string(seed));
     auto env = envs::make(envs::sma_limb::SmaLimbEnv::kId, params);
-    auto& robot = dynamic_cast<envs::sma_limb::SmaLimbEnv&>(*env);
-    RobotLimb limb_under_control(robot, seed);
+    RobotLimb limb_under_control(*env, seed);
     control::WaypointFollower follower(control::reference_pattern(pattern));
     const std::unique_ptr<control::TrackingController> controller = make_controller();
     const int points = static_cast<int>(follower.points().cols());
@@ -139,7 +139,9 @@ int track_command(const Arguments& line) {
       if (push_n <= 0.0) return;
       const int due = pushes == 0 ? points / 4 : pushes == 1 ? 3 * points / 4 : points + 1;
       if (f.index() >= due) {
-        robot.apply_push(Eigen::Vector2d(push_n, 0.0), 0.2);
+        auto* robot = envs::find_wrapper<envs::sma_limb::SmaLimbEnv>(*env);
+        require(robot != nullptr, "the robot cannot be pushed", "tendril track --push");
+        robot->apply_push(Eigen::Vector2d(push_n, 0.0), 0.2);
         ++pushes;
       }
     };
