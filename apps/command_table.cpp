@@ -300,7 +300,11 @@ std::vector<CommandSpec> command_table() {
                   output("The errors as CSV (a new file)."),
                   {"open-loop-dir", "DIR",
                    "The model's open-loop response to the sine, square "
-                   "and sawtooth test inputs, one CSV each."}},
+                   "and sawtooth test inputs, one CSV each."},
+                  {"baselines", "",
+                   "Also the \"predict no change\" baseline on the same points (rows "
+                   "persistence_*), and the one-step errors of both within 3 readings of an "
+                   "input change and under steady input (*_input_change, *_steady_input)."}},
       .run = model_eval_command,
   });
 #endif
@@ -357,12 +361,23 @@ std::vector<CommandSpec> command_table() {
       .max_positionals = 1,
       .summary = "The SMA limb under the diamond throttle sequence through the safety filter "
                  "(seed 001 §6.5): time to the first violation.",
+      .description =
+          "The limb runs on the calibration the critic's learned model was fitted with (its data "
+          "set's header names it); a --calibration with another PWM table or other zero offsets "
+          "is refused. --set env.params.KEY=VALUE sets the robot's other parameters, e.g. "
+          "--set env.params.backend=bridge (docs/hardware.md).",
       .options = {{"epsilon", "E,...", "Thresholds ε₂."},
                   {"trials", "N", "Trials per threshold."},
                   seed_option("Trial k resets with S + k."),
                   {"limb", "stiff|soft", "The limb (default stiff)."},
+                  {"calibration", "FILE|none",
+                   "The limb's calibration; default the critic's model's (required when the "
+                   "model does not name one)."},
                   {"csv", "FILE", "One row per trial."},
                   {"trajectories", "FILE", "Every step of every trial."}},
+      .takes_set = true,
+      .set_help = "Set a parameter of the robot (SmaLimb/Robot-v0), e.g. "
+                  "--set env.params.backend=bridge.",
       .run = safety_diamond_command,
   });
 #endif
@@ -393,10 +408,17 @@ std::vector<CommandSpec> command_table() {
       .max_positionals = 1,
       .summary = "Track reference paths in bend-angle space on the SMA limb twin (waypoints "
                  "and PID, or a trained policy); print the tracking RMSE.",
+      .description =
+          "The limb runs on the calibration its controller was made for: with --policy, the one "
+          "the policy's learned model was fitted with (its data set's header names it); a "
+          "--calibration with another PWM table or other zero offsets is refused. PID needs "
+          "--calibration. --set env.params.KEY=VALUE sets the robot's other parameters, e.g. "
+          "--set env.params.backend=bridge --set env.params.bridge.port=/dev/ttyACM0 for a limb "
+          "over the host bridge (docs/hardware.md).",
       .options = {{"calibration", "FILE|none",
-                   "The limb's calibration (`tendril data calibrate`): what the policies and "
-                   "models were made on. Required; `none` runs the nominal table on raw "
-                   "readings."},
+                   "The limb's calibration (`tendril data calibrate`); default the policy's "
+                   "model's. `none`: the nominal table on raw readings (refused for a policy "
+                   "made on calibrated data)."},
                   {"limb", "stiff|soft", "The limb (default stiff)."},
                   {"tip-mass", "KG", "A mass on the tip (default 0)."},
                   {"push", "N", "Shove the tip at 1/4 and 3/4 of the path (N)."},
@@ -408,7 +430,11 @@ std::vector<CommandSpec> command_table() {
                    "PID."},
                   {"best", "", "Its best_model.policy."},
                   {"stochastic", "", "Sample its actions."}},
-      .examples = {"tendril track circle --calibration configs/sma_limb/calibration_stiff.yaml"},
+      .takes_set = true,
+      .set_help = "Set a parameter of the robot (SmaLimb/Robot-v0), e.g. "
+                  "--set env.params.backend=bridge.",
+      .examples = {"tendril track circle --calibration configs/sma_limb/calibration_stiff.yaml",
+                   "tendril track all --policy runs/rl/lk_encoder -o paths.csv"},
       .run = track_command,
   });
 #endif

@@ -10,6 +10,7 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
+#include "tendril/dynamics/evaluation.hpp"
 #include "tendril/dynamics/fit_run.hpp"
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
@@ -25,8 +26,8 @@ namespace fs = std::filesystem;
 using namespace tendril::dynamics;
 
 void print_row(const EvaluationRow& row) {
-  std::string label = row.metric == "one_step" ? "one-step" : "rollout";
-  if (row.metric != "one_step") {
+  std::string label = row.metric == "one_step" ? "one-step" : row.metric;
+  if (row.metric.find("rollout") != std::string::npos) {
     char horizon[48];
     std::snprintf(horizon, sizeof horizon, " %gs", row.horizon);
     label += horizon;
@@ -140,6 +141,36 @@ void write_open_loop(Model& model, const SequenceData& data, const fs::path& dir
   }
 }
 
+// The "predict no change" baseline beside the model's rows, and the one-step errors of both
+// split by whether the input changed within the last 3 readings (a limb that rings after a
+// throttle change is predictable neither by persistence nor, from noisy rates, by a model).
+std::vector<EvaluationRow> baseline_rows(Model& model, const SequenceData& data, Split split,
+                                         const std::vector<double>& horizons, double max_gap) {
+  constexpr int kReadings = 3;
+  const WindowSet windows(data, model, max_gap);
+  const dynamics::PointFilter changing = [&](int64_t t) {
+    return dynamics::input_changed_within(data, t, kReadings);
+  };
+  const dynamics::PointFilter steady = [&](int64_t t) { return !changing(t); };
+  std::vector<EvaluationRow> rows;
+  rows.push_back(
+      {"persistence_one_step", 0.0, dynamics::persistence_one_step_errors(data, windows, split)});
+  for (double horizon : horizons) {
+    rows.push_back({"persistence_rollout", horizon,
+                    dynamics::persistence_rollout_errors(data, split, horizon, max_gap,
+                                                         model.window_length())});
+  }
+  rows.push_back({"one_step_input_change", 0.0,
+                  dynamics::one_step_errors(model, windows, split, 256, changing)});
+  rows.push_back({"one_step_steady_input", 0.0,
+                  dynamics::one_step_errors(model, windows, split, 256, steady)});
+  rows.push_back({"persistence_one_step_input_change", 0.0,
+                  dynamics::persistence_one_step_errors(data, windows, split, changing)});
+  rows.push_back({"persistence_one_step_steady_input", 0.0,
+                  dynamics::persistence_one_step_errors(data, windows, split, steady)});
+  return rows;
+}
+
 }  // namespace
 
 int model_eval_command(const Arguments& line) {
@@ -172,8 +203,14 @@ int model_eval_command(const Arguments& line) {
               architecture_name(model->spec().kind).c_str(), model->spec().window,
               split_name.c_str(), line.positional[1].c_str());
   // Each row as soon as it is measured: the rollouts of long horizons take a while.
-  const std::vector<EvaluationRow> rows =
+  std::vector<EvaluationRow> rows =
       evaluate_model(*model, data, split, horizons, max_gap, print_row);
+  if (line.has("baselines")) {
+    for (const EvaluationRow& row : baseline_rows(*model, data, split, horizons, max_gap)) {
+      print_row(row);
+      rows.push_back(row);
+    }
+  }
   if (line.has("output")) {
     write_evaluation_csv(rows, line.value("output", ""));
     std::printf("errors -> %s\n", line.value("output", "").c_str());

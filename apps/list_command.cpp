@@ -27,12 +27,16 @@ std::string limit_text(const envs::EnvSpec& spec) {
 // reports (one step from reset(0) with a sampled action); or why it needs parameters.
 struct Description {
   std::string observation, action, info, needs;
+  std::string made_with;  // the parameters it cannot default, when it has such
 };
 
 Description describe(const envs::Registry& registry, const std::string& id) {
   Description d;
   try {
-    const std::unique_ptr<Env> env = registry.make(id);
+    const std::string& example = registry.spec(id).example_params;
+    const std::unique_ptr<Env> env =
+        registry.make(id, example.empty() ? Config() : Config::parse(example));
+    if (!example.empty()) d.made_with = example;
     d.observation = env->observation_space().describe();
     d.action = env->action_space().describe();
     env->reset(0);
@@ -66,6 +70,7 @@ int list_envs_command(const Arguments& line) {
       const Description d = describe(registry, id);
       std::printf("\n## %s\n\n%s.\n\n| | |\n|---|---|\n| time limit | %s |\n", id.c_str(),
                   spec.summary.c_str(), limit_text(spec).c_str());
+      if (!d.made_with.empty()) std::printf("| made with | `%s` |\n", d.made_with.c_str());
       if (d.needs.empty()) {
         std::printf("| observation | `%s` |\n| action | `%s` |\n| info | %s |\n",
                     d.observation.c_str(), d.action.c_str(),
@@ -85,6 +90,7 @@ int list_envs_command(const Arguments& line) {
     const Description d = describe(registry, id);
     std::printf("%s: %s\n  time limit   %s\n", id.c_str(), spec.summary.c_str(),
                 limit_text(spec).c_str());
+    if (!d.made_with.empty()) std::printf("  made with    %s\n", d.made_with.c_str());
     if (d.needs.empty()) {
       std::printf("  observation  %s\n  action       %s\n  info         %s\n",
                   d.observation.c_str(), d.action.c_str(),

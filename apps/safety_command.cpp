@@ -12,6 +12,7 @@
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
+#include "limb_deployment.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
@@ -223,7 +224,11 @@ int safety_diamond_command(const Arguments& line) {
   if (line.has("epsilon")) options.epsilons = line.numbers("epsilon", -1e300, 1e300);
   options.trials = static_cast<int>(line.integer("trials", options.trials, 1, 1000));
   options.seed = line.unsigned_integer("seed", 0);
-  options.limb_params.set("limb", line.value("limb", "stiff"));
+  // The critic was learned in a model of the calibrated limb: deploy it on that calibration.
+  const Config trained_env_params = safety::task_experiment_of_run(line.positional[0]).env.params;
+  const LimbDeployment deployment = limb_deployment(line, &trained_env_params, "safety diamond");
+  options.limb_params = deployment.params;
+  std::printf("the limb's calibration: %s\n", deployment.calibration.c_str());
   const std::vector<safety::DiamondTrial> trials = safety::run_diamond(line.positional[0], options);
   std::ostringstream summary, paths;
   summary << "epsilon,trial,time_to_violation_s,intervention_rate\n";

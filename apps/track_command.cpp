@@ -1,22 +1,27 @@
 // `tendril track`: seed 001's tracking experiments (thesis §5.2, Tables 5.4–5.5) on the SMA limb
-// behind its robot interface — the twin here — with the waypoint follower and the PID baseline
-// or a policy trained in SmaLimb/LearnedReach-v0 (--policy RUN).
+// behind its robot interface — the twin, or a limb over the bridge (--set env.params.backend=
+// bridge) — with the waypoint follower and the PID baseline or a policy trained in
+// SmaLimb/LearnedReach-v0 (--policy RUN), on the calibration the policy's model was fitted with.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
+#include "limb_deployment.hpp"
 #include "tendril/control/reference_patterns.hpp"
 #include "tendril/control/tracking_loop.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/data/prepare.hpp"
+#include "tendril/envs/registry.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
+#include "tendril/envs/wrappers/wrapper.hpp"
 #ifdef TENDRIL_WITH_RL
 #include "policy_controller.hpp"
 #include "run_policy.hpp"
@@ -30,7 +35,7 @@ namespace {
 // estimate as the training data (data::StateFilter, thesis eqs. 4.5 and 4.7).
 class RobotLimb final : public control::TrackedLimb {
  public:
-  RobotLimb(envs::sma_limb::SmaLimbEnv& robot, uint64_t seed) : robot_(robot), seed_(seed) {}
+  RobotLimb(Env& robot, uint64_t seed) : robot_(robot), seed_(seed) {}
 
   control::LimbState reset() override {
     filter_.reset();
@@ -49,7 +54,7 @@ class RobotLimb final : public control::TrackedLimb {
     return control::LimbState{.time_s = reading[2], .angles = x.head<2>(), .rates = x.tail<2>()};
   }
 
-  envs::sma_limb::SmaLimbEnv& robot_;
+  Env& robot_;  // SmaLimb/Robot-v0, on the bridge inside its HardwareInfo wrapper
   uint64_t seed_;
   data::StateFilter filter_;
 };
@@ -77,31 +82,21 @@ int track_command(const Arguments& line) {
   const double push_n = line.number("push", 0.0, 0.0, 100.0);
   const int max_steps = static_cast<int>(line.integer("steps", 3000, 1, 100000000));
   const uint64_t seed = line.unsigned_integer("seed", 0);
-  // The policies, models and data sets came from the calibrated limb (its PWM table, its
-  // sensor's zero offsets removed): a deployment names the calibration it runs on, or says
-  // `none` to run on the nominal table with the raw readings.
-  const std::string calibration = line.value("calibration");
-  require(!calibration.empty(),
-          "name the limb's calibration (--calibration FILE, written by `tendril data calibrate`; "
-          "or --calibration none for the nominal table and raw readings)",
-          "tendril track");
   const std::string out = line.value("output", "");
   require(!out.empty() ? !std::filesystem::exists(out) : true,
           "exists already; choose another file", out);
-  std::ofstream out_file;
-  if (!out.empty()) {
-    out_file.open(out, std::ios::binary);
-    require(out_file.good(), "cannot write", out);
-  }
 
   // The controller: PID, or a trained policy that acts on the limb as on the learned model.
   std::function<std::unique_ptr<control::TrackingController>()> make_controller = [] {
     return std::make_unique<control::PidController>();
   };
   std::string controller_name = "PID (Kp 2, Ki 0.001, Kd 0.5)";
+  // The policy's learned model names the calibration its data came from (LimbDeployment).
+  std::optional<Config> trained_env_params;
   if (line.has("policy")) {
 #ifdef TENDRIL_WITH_RL
     const RunPolicy run = open_run_policy(line.value("policy", ""), line.has("best"));
+    trained_env_params = run.experiment.env.params;
     const auto options =
         envs::sma_limb::LearnedReachOptions::from_config(run.experiment.env.params);
     const bool deterministic = !line.has("stochastic");
@@ -114,21 +109,27 @@ int track_command(const Arguments& line) {
     throw Error("this program was built without the RL layer", "tendril track --policy");
 #endif
   }
-  std::printf("%s on the %s limb twin, tip mass %.3f kg%s\n", controller_name.c_str(), limb.c_str(),
-              tip_mass, push_n > 0 ? ", pushes at 1/4 and 3/4" : "");
+  const LimbDeployment deployment =
+      limb_deployment(line, trained_env_params ? &*trained_env_params : nullptr, "track");
+  std::printf(
+      "%s on the %s limb (%s), calibration %s, tip mass %.3f kg%s\n", controller_name.c_str(),
+      limb.c_str(), deployment.params.get_or<std::string>("backend", "twin").c_str(),
+      deployment.calibration.c_str(), tip_mass, push_n > 0 ? ", pushes at 1/4 and 3/4" : "");
+  std::ofstream out_file;
+  if (!out.empty()) {
+    out_file.open(out, std::ios::binary);
+    require(out_file.good(), "cannot write", out);
+  }
   std::printf("%-8s %8s %9s %10s\n", "pattern", "steps", "finished", "RMSE [deg]");
   bool first = true;
   for (const std::string& pattern : patterns) {
-    Config params;
-    params.set("limb", limb);
+    Config params = deployment.params;
     char mass[32];
     std::snprintf(mass, sizeof mass, "%.17g", tip_mass);
     params.set("tip_mass", mass);
     params.set("seed", std::to_string(seed));
-    if (calibration != "none") params.set("calibration", calibration);
-    auto env = envs::sma_limb::SmaLimbEnv::create(params);
-    auto& robot = dynamic_cast<envs::sma_limb::SmaLimbEnv&>(*env);
-    RobotLimb limb_under_control(robot, seed);
+    auto env = envs::make(envs::sma_limb::SmaLimbEnv::kId, params);
+    RobotLimb limb_under_control(*env, seed);
     control::WaypointFollower follower(control::reference_pattern(pattern));
     const std::unique_ptr<control::TrackingController> controller = make_controller();
     const int points = static_cast<int>(follower.points().cols());
@@ -138,7 +139,9 @@ int track_command(const Arguments& line) {
       if (push_n <= 0.0) return;
       const int due = pushes == 0 ? points / 4 : pushes == 1 ? 3 * points / 4 : points + 1;
       if (f.index() >= due) {
-        robot.apply_push(Eigen::Vector2d(push_n, 0.0), 0.2);
+        auto* robot = envs::find_wrapper<envs::sma_limb::SmaLimbEnv>(*env);
+        require(robot != nullptr, "the robot cannot be pushed", "tendril track --push");
+        robot->apply_push(Eigen::Vector2d(push_n, 0.0), 0.2);
         ++pushes;
       }
     };

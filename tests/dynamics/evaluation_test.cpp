@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "support/error_message.hpp"
 #include "synthetic_limb.hpp"
 #include "test_models.hpp"
@@ -110,6 +112,51 @@ TEST(Evaluation, RolloutsCutEachTestSegmentIntoPiecesOfTheHorizon) {
   const ErrorReport whole = rollout_errors(model, data, Split::kTest, 1800.0, 1.0);
   EXPECT_EQ(whole.rollouts, 1);
   EXPECT_EQ(whole.points, 15);
+}
+
+// "Predict no change" on a ramp θ = c·t, ω = c, at 0.1 s a row: one step ahead every angle error
+// is c·0.1 and every rate error 0; over a piece of k steps held at its start the angle errors
+// are c·0.1·j, j = 1 … k, so RMSE = c·0.1·√((k + 1)(2k + 1)/6).
+TEST(Evaluation, PersistenceIsTheErrorOfPredictingNoChange) {
+  SequenceData data = testing::SyntheticLimb{}.generate(100, 6);
+  const double c = 3.0;
+  for (int t = 0; t < 100; ++t) {
+    data.time(t) = 0.1 * t;
+    data.states.row(t) << c * data.time(t), -c * data.time(t), c, -c;
+    data.inputs.row(t) << (t % 10 == 0 ? 1.0 : 0.0), 0.0;  // a change at t = 10k and 10k + 1
+  }
+  Model model(small_description(Architecture::kRnn), 3);  // window 5
+  const WindowSet windows(data, model, 1.0);
+  const ErrorReport one_step = persistence_one_step_errors(data, windows, Split::kTest);
+  EXPECT_EQ(one_step.points, static_cast<int64_t>(windows.ends(Split::kTest).size()));
+  EXPECT_NEAR(one_step.rmse[0], c * 0.1, 1e-12);
+  EXPECT_EQ(one_step.rmse[1], 0.0);
+  // Pieces of 5 steps, as the model's rollouts (rows 84→89→94→99).
+  const ErrorReport held = persistence_rollout_errors(data, Split::kTest, 0.5 + 1e-9, 1.0, 5);
+  EXPECT_EQ(held.rollouts, 3);
+  EXPECT_EQ(held.points, 15);
+  EXPECT_NEAR(held.rmse[0], c * 0.1 * std::sqrt(6.0 * 11.0 / 6.0), 1e-9);
+  // The filter keeps the windows whose last 3 rows saw an input change: t = 10k … 10k + 3.
+  const PointFilter changing = [&](int64_t t) { return input_changed_within(data, t, 3); };
+  for (int64_t t : {80, 81, 82, 83}) EXPECT_TRUE(changing(t)) << t;
+  for (int64_t t : {84, 89, 94}) EXPECT_FALSE(changing(t)) << t;
+  const ErrorReport near = persistence_one_step_errors(data, windows, Split::kTest, changing);
+  const ErrorReport steady = persistence_one_step_errors(data, windows, Split::kTest,
+                                                         [&](int64_t t) { return !changing(t); });
+  EXPECT_EQ(near.points + steady.points, one_step.points);
+  EXPECT_GT(near.points, 0);
+  // The model's one-step errors split the same way and pool back to the whole.
+  const ErrorReport all = one_step_errors(model, windows, Split::kTest, 7);
+  const ErrorReport model_near = one_step_errors(model, windows, Split::kTest, 7, changing);
+  const ErrorReport model_steady =
+      one_step_errors(model, windows, Split::kTest, 7, [&](int64_t t) { return !changing(t); });
+  EXPECT_EQ(model_near.points, near.points);
+  for (int g = 0; g < 2; ++g) {
+    const double pooled = (model_near.rmse[g] * model_near.rmse[g] * model_near.points +
+                           model_steady.rmse[g] * model_steady.rmse[g] * model_steady.points) /
+                          static_cast<double>(all.points);
+    EXPECT_NEAR(std::sqrt(pooled), all.rmse[g], 1e-6 * all.rmse[g]);
+  }
 }
 
 }  // namespace

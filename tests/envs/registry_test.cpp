@@ -7,6 +7,7 @@
 #include <set>
 
 #include "support/error_message.hpp"
+#include "support/required_env_params.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/classic_control/pendulum.hpp"
 #include "tendril/envs/wrappers/time_limit.hpp"
@@ -120,7 +121,7 @@ TEST(Registry, EveryBuiltinEnvironmentRunsAnEpisodeToItsLimit) {
       "Safety/DubinsCar-v0",   "SmaLimb/LearnedSafety-v0",
       "UR5/Reach-v0"};
   for (const std::string& id : registered_ids()) {
-    const auto env = make(id);
+    const auto env = make(id, testing::required_env_params(id));
     const std::optional<int64_t> registered = builtin_registry().spec(id).max_episode_steps;
     const int64_t limit = registered.value_or(200);
     Rng rng(1);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "support/error_message.hpp"
+#include "support/required_env_params.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/registry.hpp"
 
@@ -49,11 +50,15 @@ Trace run(Env& env, const std::vector<Action>& actions) {
   return trace;
 }
 
+std::unique_ptr<Env> make_env(const std::string& id) {
+  return make(id, testing::required_env_params(id));
+}
+
 class EverySnapshotEnv : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(EverySnapshotEnv, SteppingOnFromALoadedSnapshotRepeatsTheOriginal) {
   const std::string id = GetParam();
-  auto original = make(id);
+  auto original = make_env(id);
   if (!original->supports_snapshots()) {
     Snapshot bytes;
     SnapshotWriter out(bytes);
@@ -70,7 +75,7 @@ TEST_P(EverySnapshotEnv, SteppingOnFromALoadedSnapshotRepeatsTheOriginal) {
   Snapshot bytes;
   SnapshotWriter out(bytes);
   original->save_state(out);
-  auto copy = make(id);
+  auto copy = make_env(id);
   copy->reset(99);  // another episode entirely
   SnapshotReader in(bytes);
   copy->load_state(in);
@@ -89,13 +94,13 @@ TEST_P(EverySnapshotEnv, SteppingOnFromALoadedSnapshotRepeatsTheOriginal) {
 
 TEST_P(EverySnapshotEnv, ASnapshotOfAnotherEnvironmentIsRefused) {
   const std::string id = GetParam();
-  auto env = make(id);
+  auto env = make_env(id);
   if (!env->supports_snapshots()) return;
   env->reset(1);
   // Another registered env that supports snapshots and has another id.
   for (const std::string& other_id : registered_ids()) {
     if (other_id == id) continue;
-    auto other = make(other_id);
+    auto other = make_env(other_id);
     if (!other->supports_snapshots()) continue;
     other->reset(1);
     Snapshot bytes;

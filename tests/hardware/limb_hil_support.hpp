@@ -37,8 +37,11 @@ inline std::unique_ptr<LimbBridge> bridge_to(const LimbEmulator& emulator,
   return std::make_unique<LimbBridge>(std::move(link), settings);
 }
 
+// SmaLimb/Robot-v0 over the bridge, on the nominal table and raw readings, as the twin it is
+// compared with.
 inline Config bridge_env_params(const std::string& port, const std::string& extra = "") {
-  return Config::parse("backend: bridge\nbridge:\n  port: " + port + "\n" + extra);
+  return Config::parse("calibration: none\nbackend: bridge\nbridge:\n  port: " + port + "\n" +
+                       extra);
 }
 
 // SmaLimb/Robot-v0 (observation θx, θy, t) as the tracking loop's limb: the rates are the finite

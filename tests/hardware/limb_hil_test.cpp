@@ -92,7 +92,7 @@ TEST(LimbHil, AMinuteOfExplorationDataThroughTheFirmwareEqualsTheTwins) {
   envs::sma_limb::CollectSettings settings;
   settings.duration_s = 60.0;
   settings.cutoff_cooldown_s = 5.0;
-  auto twin = SmaLimbEnv::create(Config::parse("limb: stiff"));
+  auto twin = SmaLimbEnv::create(Config::parse("limb: stiff\ncalibration: none"));
   envs::sma_limb::CountBasedExploration twin_source;
   const auto expected = envs::sma_limb::collect(*twin, twin_source, settings, 21);
 
@@ -120,7 +120,7 @@ TEST(LimbHil, AClosedLoopControllerThroughTheFirmwareTracksAsOnTheTwin) {
     if (info != nullptr) *info = limb.info();
     return run;
   };
-  auto twin = SmaLimbEnv::create(Config::parse("limb: stiff"));
+  auto twin = SmaLimbEnv::create(Config::parse("limb: stiff\ncalibration: none"));
   Info twin_info;
   const control::TrackingRun expected = run_on(*twin, &twin_info);
 

@@ -57,6 +57,16 @@ def require_sb3():
 
 
 REFERENCE = os.environ.get("TENDRIL_REFERENCE", "")
+
+# What a registered environment cannot default (tests/support/required_env_params.hpp): the SMA
+# limb robot always names its calibration; "none" is its nominal table on raw readings.
+REQUIRED_PARAMS = {"SmaLimb/Robot-v0": {"calibration": "none"}}
+
+
+def make_by_id(env_id, **kwargs):
+    """tendril.make(env_id) with the parameters the environment cannot default."""
+    import tendril
+    return tendril.make(env_id, **REQUIRED_PARAMS.get(env_id, {}), **kwargs)
 APP = os.environ.get("TENDRIL_APP", "")
 SOURCE_DIR = os.environ.get("TENDRIL_SOURCE_DIR",
                             os.path.join(os.path.dirname(__file__), "..", ".."))

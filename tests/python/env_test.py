@@ -9,7 +9,7 @@ import warnings
 import numpy as np
 import pytest
 
-from conftest import reference_episode, require_gymnasium
+from conftest import make_by_id, reference_episode, require_gymnasium
 
 import tendril
 
@@ -34,7 +34,7 @@ def test_gymnasium_env_checker_passes(env_id):
     gymnasium = require_gymnasium()
     from gymnasium.utils.env_checker import check_env
 
-    env = tendril.make(env_id)
+    env = make_by_id(env_id)
     assert isinstance(env, gymnasium.Env)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -62,7 +62,7 @@ def seeded_actions(env, count, seed):
 
 @pytest.mark.parametrize("env_id", IDS)
 def test_seeded_episode_equals_the_cpp_environment_bit_for_bit(env_id, scratch):
-    env = tendril.make(env_id)
+    env = make_by_id(env_id)
     limit = min(env.max_episode_steps or 1000, 2000)
     obs, _ = env.reset(seed=11)
     observations, rewards, flags, used = [obs], [], [], []

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "rl/export/sample_policies.hpp"
+#include "support/required_env_params.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/policy.hpp"
@@ -47,7 +48,7 @@ void put(std::ofstream& out, const Eigen::VectorXf& values) {
 
 int episode(const std::string& id, uint64_t seed, const std::string& actions_file,
             const std::string& out_file) {
-  auto env = tendril::envs::make(id);
+  auto env = tendril::envs::make(id, tendril::testing::required_env_params(id));
   const std::vector<float> actions = read_floats(actions_file);
   const int size = env->action_space().size();
   std::ofstream out(out_file, std::ios::binary);

@@ -9,7 +9,7 @@ import warnings
 import numpy as np
 import pytest
 
-from conftest import require_gymnasium
+from conftest import make_by_id, require_gymnasium
 
 import tendril
 
@@ -17,7 +17,7 @@ import tendril
 MADE = {}
 for env_id in tendril.registry():
     try:
-        MADE[env_id] = tendril.make(env_id)
+        MADE[env_id] = make_by_id(env_id)
     except tendril.Error:
         pass  # learned-model environments need a model file
 WITH_SCENE = []
@@ -38,7 +38,7 @@ def test_scene_environments_are_found():
 def test_rgb_array_is_a_deterministic_picture_of_the_scene(env_id):
     pictures = []
     for _ in range(2):
-        env = tendril.make(env_id, render_mode="rgb_array", render_size=(160, 120))
+        env = make_by_id(env_id, render_mode="rgb_array", render_size=(160, 120))
         env.reset(seed=4)
         env.action_space.seed(4)
         for _ in range(3):

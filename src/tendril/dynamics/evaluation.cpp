@@ -50,6 +50,36 @@ struct SquaredErrors {
   std::vector<int64_t> counts;
 };
 
+// The pieces rollout_errors rolls out: each segment of `split` cut into consecutive pieces of
+// `horizon` seconds of recorded time, each started at the row that completes its first window.
+void rollout_pieces(const SequenceData& data, Split split, double horizon, double max_gap, int n,
+                    std::vector<int64_t>& starts, std::vector<int64_t>& steps) {
+  require(horizon > 0.0, "the rollout horizon must be positive", "dynamics::rollout_errors");
+  for (const Segment& segment : data.segments(max_gap)) {
+    if (segment.split != split) continue;
+    int64_t start = segment.begin + n - 1;
+    while (start + 1 < segment.end) {
+      int64_t end = start;
+      while (end + 1 < segment.end && data.time(end + 1) - data.time(start) <= horizon) ++end;
+      if (end == start) break;
+      starts.push_back(start);
+      steps.push_back(end - start);
+      start = end;
+    }
+  }
+}
+
+std::vector<int64_t> kept_ends(const std::vector<int64_t>& ends, const PointFilter& include) {
+  std::vector<int64_t> kept;
+  for (int64_t t : ends) {
+    if (include(t)) kept.push_back(t);
+  }
+  return kept;
+}
+
+ErrorReport one_step_errors_at(Model& model, const WindowSet& windows,
+                               const std::vector<int64_t>& ends, int batch_size);
+
 }  // namespace
 
 std::vector<StateGroup> state_groups(const std::vector<std::string>& state_names) {
@@ -72,8 +102,53 @@ std::vector<StateGroup> state_groups(const std::vector<std::string>& state_names
   return groups;
 }
 
-ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split, int batch_size) {
-  const std::vector<int64_t>& ends = windows.ends(split);
+ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split, int batch_size,
+                            const PointFilter& include) {
+  if (include) {
+    const std::vector<int64_t> kept = kept_ends(windows.ends(split), include);
+    return one_step_errors_at(model, windows, kept, batch_size);
+  }
+  return one_step_errors_at(model, windows, windows.ends(split), batch_size);
+}
+
+ErrorReport persistence_one_step_errors(const SequenceData& data, const WindowSet& windows,
+                                        Split split, const PointFilter& include) {
+  SquaredErrors errors(state_groups(data.state_names));
+  int64_t count = 0;
+  for (int64_t t : windows.ends(split)) {
+    if (include && !include(t)) continue;
+    errors.add(data.states.row(t), data.states.row(t + 1));
+    ++count;
+  }
+  return errors.report(count, count);
+}
+
+ErrorReport persistence_rollout_errors(const SequenceData& data, Split split, double horizon,
+                                       double max_gap, int window_length) {
+  std::vector<int64_t> starts, steps;
+  rollout_pieces(data, split, horizon, max_gap, window_length, starts, steps);
+  SquaredErrors errors(state_groups(data.state_names));
+  int64_t points = 0;
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    for (int64_t k = 0; k < steps[i]; ++k) {
+      errors.add(data.states.row(starts[i]), data.states.row(starts[i] + 1 + k));
+    }
+    points += steps[i];
+  }
+  return errors.report(points, static_cast<int64_t>(starts.size()));
+}
+
+bool input_changed_within(const SequenceData& data, int64_t t, int readings) {
+  for (int64_t k = t; k > t - readings && k >= 1; --k) {
+    if (data.inputs.row(k) != data.inputs.row(k - 1)) return true;
+  }
+  return false;
+}
+
+namespace {
+
+ErrorReport one_step_errors_at(Model& model, const WindowSet& windows,
+                               const std::vector<int64_t>& ends, int batch_size) {
   SquaredErrors errors(state_groups(model.description().state_names));
   for (std::size_t begin = 0; begin < ends.size(); begin += static_cast<std::size_t>(batch_size)) {
     const std::span<const int64_t> batch(ends.data() + begin,
@@ -87,6 +162,8 @@ ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split,
   const auto count = static_cast<int64_t>(ends.size());
   return errors.report(count, count);
 }
+
+}  // namespace
 
 std::vector<RowMatrixXd> rollouts(Model& model, const SequenceData& data,
                                   const std::vector<int64_t>& starts,
@@ -129,21 +206,8 @@ std::vector<RowMatrixXd> rollouts(Model& model, const SequenceData& data,
 
 ErrorReport rollout_errors(Model& model, const SequenceData& data, Split split, double horizon,
                            double max_gap) {
-  require(horizon > 0.0, "the rollout horizon must be positive", "dynamics::rollout_errors");
-  const int n = model.window_length();
   std::vector<int64_t> starts, steps;
-  for (const Segment& segment : data.segments(max_gap)) {
-    if (segment.split != split) continue;
-    int64_t start = segment.begin + n - 1;
-    while (start + 1 < segment.end) {
-      int64_t end = start;
-      while (end + 1 < segment.end && data.time(end + 1) - data.time(start) <= horizon) ++end;
-      if (end == start) break;
-      starts.push_back(start);
-      steps.push_back(end - start);
-      start = end;
-    }
-  }
+  rollout_pieces(data, split, horizon, max_gap, model.window_length(), starts, steps);
   SquaredErrors errors(state_groups(model.description().state_names));
   if (starts.empty()) return errors.report(0, 0);
   const std::vector<RowMatrixXd> predicted = rollouts(model, data, starts, steps);

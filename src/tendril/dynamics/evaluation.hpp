@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,10 +31,27 @@ struct ErrorReport {
   int64_t rollouts = 0;      // independent starts (1-step: windows)
 };
 
+// Which window ends t a one-step error pools; every one when empty.
+using PointFilter = std::function<bool(int64_t t)>;
+
 // One-step prediction (eq. 4.11): x̂_{t+1} = x_t + φ(recorded window ending at t), for every
-// window of `split`.
+// window of `split` (that `include` accepts).
 ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split,
-                            int batch_size = 256);
+                            int batch_size = 256, const PointFilter& include = {});
+
+// The "predict no change" baseline on the points the model is measured on: x̂_{t+1} = x_t one
+// step ahead (Δx = 0) over the same windows, and x̂ = the start's recorded state throughout each
+// rollout piece of rollout_errors (same pieces). A model has learned the dynamics only where it
+// beats this.
+ErrorReport persistence_one_step_errors(const SequenceData& data, const WindowSet& windows,
+                                        Split split, const PointFilter& include = {});
+ErrorReport persistence_rollout_errors(const SequenceData& data, Split split, double horizon,
+                                       double max_gap, int window_length);
+
+// Whether the input changed at one of the `readings` newest rows of the window ending at t
+// (u_k ≠ u_{k−1} for some k in t − readings + 1 … t): the points right after a throttle change,
+// where an under-damped limb rings.
+bool input_changed_within(const SequenceData& data, int64_t t, int readings);
 
 // Recursive rollouts (eq. 4.12): from a recorded window, x̂_{t+1} = x̂_t + φ(x̂_t, …, u_t) with
 // the predictions fed back and the recorded inputs applied. Each segment of `split` is cut into

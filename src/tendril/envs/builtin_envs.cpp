@@ -60,8 +60,10 @@ void register_builtin_envs(Registry& registry) {
                 "pneumatic arm reaches a goal behind a plate (task in a learned model)"});
   // The SMA limb of seed 001 as its software sees it (throttles in, bend readings out); no time
   // limit: data collection runs for hours, tasks bring their own.
+  // It never runs on a default calibration (sma_limb_env.hpp); listings show it uncalibrated.
   registry.add({sma_limb::SmaLimbEnv::kId, &sma_limb::SmaLimbEnv::create, std::nullopt,
-                "SMA-actuated silicone limb: throttles in, bend-sensor readings out (twin)"});
+                "SMA-actuated silicone limb: throttles in, bend-sensor readings out (twin)",
+                nullptr, "calibration: none"});
   // The safety-filter benchmarks of seed 001 §6.4.1 (SPEC M8); each truncates at its own
   // configured horizon T, which its observation's time entry t/T refers to.
   registry.add({safe_control::DoubleIntegrator::kId, &safe_control::DoubleIntegrator::create,

@@ -34,6 +34,9 @@ struct EnvSpec {
   std::function<std::unique_ptr<VecEnv>(const Config& params, int num_envs,
                                         std::optional<int64_t> max_episode_steps)>
       vector_factory = nullptr;
+  // The parameters it cannot default, as YAML, that `tendril list envs` and the tests that make
+  // every registered id give it ("calibration: none" for the limb robot); empty for most.
+  std::string example_params;
 };
 
 // Environment ids → factories. Filled explicitly (see builtin_envs.hpp), never by static

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <utility>
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
@@ -118,7 +119,8 @@ class SmaLimbEnvParams : public tendril::testing::ScratchDirectoryTest {
 };
 
 TEST_F(SmaLimbEnvParams, AreReadFromTheConfigAndCheckedAgainstTheCalibration) {
-  auto env = make("SmaLimb/Robot-v0", Config::parse("limb: soft\nseed: 4\ntip_mass: 0.01\n"));
+  auto env = make("SmaLimb/Robot-v0",
+                  Config::parse("limb: soft\nseed: 4\ntip_mass: 0.01\ncalibration: none\n"));
   EXPECT_EQ(env->action_space().size(), 2);
   const auto* limb_env = dynamic_cast<const SmaLimbEnv*>(env.get());
   ASSERT_NE(limb_env, nullptr) << "no time limit wraps the robot";
@@ -132,12 +134,60 @@ TEST_F(SmaLimbEnvParams, AreReadFromTheConfigAndCheckedAgainstTheCalibration) {
   });
   EXPECT_NE(mismatch.find("stiff.yaml"), std::string::npos) << mismatch;
   EXPECT_NE(error_message([] {
-              make("SmaLimb/Robot-v0", Config::parse("limb: rubber\n"));
+              make("SmaLimb/Robot-v0", Config::parse("limb: rubber\ncalibration: none\n"));
             }).find("rubber"),
             std::string::npos);
-  EXPECT_NE(
-      error_message([] { make("SmaLimb/Robot-v0", Config::parse("load_g: 50\n")); }).find("load_g"),
-      std::string::npos);
+  EXPECT_NE(error_message([] {
+              make("SmaLimb/Robot-v0", Config::parse("load_g: 50\ncalibration: none\n"));
+            }).find("load_g"),
+            std::string::npos);
+}
+
+// Everything downstream (data, models, policies, critics) came from the calibrated limb, so no
+// robot is built on a default calibration: a missing one is an Error naming the key and how to
+// make one, on the twin and over the bridge alike (before any port is opened).
+TEST(SmaLimbEnvCalibration, IsNeverADefault) {
+  const Config twin = Config::parse("env:\n  params: {limb: stiff}\n", "deploy.yaml");
+  const std::string message =
+      error_message([&] { make("SmaLimb/Robot-v0", twin.child("env").child("params")); });
+  EXPECT_NE(message.find("deploy.yaml: env.params.calibration"), std::string::npos) << message;
+  EXPECT_NE(message.find("tendril data calibrate"), std::string::npos) << message;
+  EXPECT_NE(message.find("calibration: none"), std::string::npos) << message;
+  const std::string bridged = error_message([] {
+    make("SmaLimb/Robot-v0",
+         Config::parse("backend: bridge\nbridge: {port: /nonexistent/tty}\n", "bridge.yaml"));
+  });
+  EXPECT_NE(bridged.find("bridge.yaml: calibration"), std::string::npos) << bridged;
+  EXPECT_EQ(bridged.find("/nonexistent/tty"), std::string::npos) << bridged;
+}
+
+// The twin's sensor reads its true bend plus a zero offset of (−10°, −12°) (the stiff limb's,
+// physics/twins/sma/sma_limb_spec.cpp). On the committed calibration (`tendril data calibrate`,
+// offsets −9.99°, −11.99°) the limb at rest reads ≈ (0, 0): the mean of 20 readings with every
+// coil off lies within 0.5° of zero (the sensor's noise is ≈ 0.2°, the calibration's residual
+// 0.01°). With `calibration: none` the same rest reads the raw offsets, within 0.5° of them; and
+// full throttle drives 36 of 255 (the calibrated table) instead of the nominal 38.
+TEST(SmaLimbEnvCalibration, TheRestReadsZeroOnTheCommittedCalibration) {
+  const auto rest = [](const std::string& calibration) {
+    auto env = make("SmaLimb/Robot-v0", Config::parse("limb: stiff\ncalibration: " + calibration));
+    env->reset(7);
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (int k = 0; k < 20; ++k) {
+      const Observation reading = env->step(throttles(0, 0)).observation;
+      sum += Eigen::Vector2d(reading[0], reading[1]);
+    }
+    const double full_throttle_pwm = *env->step(throttles(10, 0)).info.get("pwm_0");
+    return std::make_pair(Eigen::Vector2d(sum / 20.0), full_throttle_pwm);
+  };
+  const auto [calibrated, calibrated_pwm] =
+      rest(std::string(TENDRIL_SOURCE_DIR) + "/configs/sma_limb/calibration_stiff.yaml");
+  EXPECT_LT(std::abs(calibrated.x()), 0.5) << calibrated.transpose();
+  EXPECT_LT(std::abs(calibrated.y()), 0.5) << calibrated.transpose();
+  EXPECT_EQ(calibrated_pwm, 36);
+  const auto [raw, raw_pwm] = rest("none");
+  EXPECT_NEAR(raw.x(), -10.0, 0.5);
+  EXPECT_NEAR(raw.y(), -12.0, 0.5);
+  EXPECT_EQ(raw_pwm, 38);
 }
 
 TEST(SmaLimbEnv, DescribesItsSceneAndCanBePushed) {

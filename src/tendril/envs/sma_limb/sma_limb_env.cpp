@@ -48,9 +48,22 @@ std::unique_ptr<Env> SmaLimbEnv::create(const Config& params) {
     }
   }
   const uint64_t seed = params.get_or<uint64_t>("seed", 0);
+  // Data sets, models, policies and critics all come from the calibrated limb (its PWM table,
+  // its sensor's zero offsets removed). A limb built on the nominal table with raw readings is
+  // another system to them — the twin at rest reads (−10°, −12°) — so the calibration is never
+  // a default: a file, or `none` said on purpose (before a calibration, or to study one).
+  if (!params.has("calibration")) {
+    throw Error(
+        "needs the limb's calibration: calibration: FILE (written by `tendril data calibrate`, "
+        "e.g. configs/sma_limb/calibration_" +
+            limb +
+            ".yaml), or calibration: none for the nominal PWM table and the sensor's raw "
+            "readings",
+        params.where("calibration"));
+  }
+  const std::string file = params.get<std::string>("calibration");
   LimbCalibration calibration = LimbCalibration::nominal(limb);
-  if (params.has("calibration")) {
-    const std::string file = params.get<std::string>("calibration");
+  if (file != kUncalibrated) {
     calibration = LimbCalibration::load(file);
     if (calibration.limb != limb) {
       throw Error("calibration was made on limb '" + calibration.limb + "', not '" + limb + "'",

@@ -31,13 +31,16 @@ namespace tendril::envs::sma_limb {
 //
 // Parameters (`env.params`): limb (stiff | soft; default stiff), seed (default 0; the first
 // reset without a seed uses it), tip_mass (kg, default 0; the thesis tried 0.010 and 0.050),
-// calibration (a file written by `tendril data calibrate`; default: the thesis' bounds for the limb, no
-// zero offsets).
+// calibration (required: a file written by `tendril data calibrate`, or `none` — the thesis'
+// nominal bounds for the limb and no zero offsets; an Error names the key when it is missing),
+// backend (twin | bridge; default twin) and bridge (docs/hardware.md).
 class SmaLimbEnv : public Env {
  public:
   static constexpr const char* kId = "SmaLimb/Robot-v0";
   static constexpr double kCutoffDeg = 100.0;
   static constexpr double kMaxThrottle = 10.0;
+  // The `calibration` value that asks for the nominal table and raw readings.
+  static constexpr const char* kUncalibrated = "none";
 
   SmaLimbEnv(std::unique_ptr<LimbRobot> robot, LimbCalibration calibration, uint64_t seed);
   static std::unique_ptr<Env> create(const Config& params);
