@@ -153,7 +153,8 @@ FilteredRun track_through_filter(Env& limb_env, const Deployed& deployed, double
 
 TEST(LimbHil, ATrainedPolicyThroughTheSafetyFilterTracksThroughTheFirmwareAsOnTheTwin) {
   const Deployed deployed = train_policy_and_critic();
-  const Config twin_params = Config::parse("limb: stiff");
+  // Nominal PWM table and raw readings on both paths, as the bridge settings have them.
+  const Config twin_params = Config::parse("limb: stiff\ncalibration: none");
   // The spiral (two turns outward, 50°) centred where the limb rests after its reset (the stiff
   // twin rests bent by some 16°), so that the run is on the path from its first step and the
   // tracking error covers every step.
