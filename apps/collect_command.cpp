@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,8 +58,11 @@ int calibrate(const Config& config) {
   std::fflush(stdout);
   const Stopwatch stopwatch;
   envs::sma_limb::TwinLimbRobot robot(spec);
-  // Each stage's result as it comes: a coil's sweep takes tens of seconds.
-  const auto report_stage = [](int coil, const envs::sma_limb::LimbCalibration& calibration) {
+  // Each stage's result as it comes: the zero offsets in a moment, then each coil's sweep in
+  // tens of seconds (the ETA counts the four sweeps).
+  const ProgressClock clock;
+  const auto report_stage = [&clock](int coil, const envs::sma_limb::LimbCalibration& calibration) {
+    const int sweeps_done = coil + 1;
     if (coil < 0) {
       std::printf("zero offsets %.2f, %.2f deg; velocity noise floor %.2f deg/s\n",
                   calibration.zero_offset_deg.x(), calibration.zero_offset_deg.y(),
@@ -69,6 +73,8 @@ int calibrate(const Config& config) {
                   100.0 * calibration.lower_pwm[coil] / 255.0, calibration.upper_pwm[coil],
                   100.0 * calibration.upper_pwm[coil] / 255.0);
     }
+    std::printf("  (%d of 4 coils swept; %s)\n", sweeps_done,
+                clock.text(sweeps_done / 4.0).c_str());
     std::fflush(stdout);
   };
   const envs::sma_limb::CalibrationResult result =
@@ -134,7 +140,9 @@ int collect_data(const Config& config, const std::string& task) {
   std::printf("tendril data collect: %s on the %s limb for %.0f s of robot time\n", task.c_str(),
               limb.c_str(), settings.duration_s);
   const Stopwatch stopwatch;
-  const LimbLog log = envs::sma_limb::collect(*env, *source, settings, seed);
+  RobotTimeProgress progress(settings.duration_s);
+  const LimbLog log = envs::sma_limb::collect(*env, *source, settings, seed, std::ref(progress));
+  progress.finish();
   stopwatch.report(log.time_s.back());
   for (double until : {window_s, settings.duration_s}) {
     const auto grid = coverage(log, until);

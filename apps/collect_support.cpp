@@ -11,6 +11,20 @@ namespace tendril::apps::collect {
 
 Stopwatch::Stopwatch() : wall_(std::chrono::steady_clock::now()), cpu_(std::clock()) {}
 
+void RobotTimeProgress::operator()(double robot_time_s) {
+  const double now = clock_.elapsed_s();
+  if (last_print_s_ >= 0.0 && now - last_print_s_ < 1.0) return;
+  last_print_s_ = now;
+  std::fprintf(stderr, "\rrobot time %.0f/%.0f s (%.1f%%)  %s   ", robot_time_s, robot_s_,
+               100.0 * robot_time_s / robot_s_, clock_.text(robot_time_s / robot_s_).c_str());
+  std::fflush(stderr);
+}
+
+void RobotTimeProgress::finish() const {
+  if (last_print_s_ < 0.0) return;
+  std::fputc('\n', stderr);
+}
+
 void Stopwatch::report(double robot_s) const {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_).count();

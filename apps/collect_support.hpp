@@ -9,6 +9,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/data_table.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/core/progress_clock.hpp"
 #include "tendril/envs/sma_limb/collect.hpp"
 #include "tendril/envs/sma_limb/visit_grid.hpp"
 
@@ -24,6 +25,20 @@ class Stopwatch {
  private:
   std::chrono::steady_clock::time_point wall_;
   std::clock_t cpu_;
+};
+
+// A progress line on standard error for a collection of `robot_s` seconds of robot time: the
+// robot time reached, the wall time and an ETA, at most once a second; `finish` ends the line.
+class RobotTimeProgress {
+ public:
+  explicit RobotTimeProgress(double robot_s) : robot_s_(robot_s) {}
+  void operator()(double robot_time_s);
+  void finish() const;
+
+ private:
+  double robot_s_;
+  ProgressClock clock_;
+  double last_print_s_ = -1.0;
 };
 
 // "<file>: <path>.<key>" for error messages.

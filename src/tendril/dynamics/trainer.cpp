@@ -10,6 +10,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
+#include "tendril/core/progress_clock.hpp"
 
 namespace tendril::dynamics {
 
@@ -19,17 +20,6 @@ using Clock = std::chrono::steady_clock;
 
 std::string key(const Config& config, const std::string& name) {
   return config.source() + ": " + (config.path().empty() ? name : config.path() + "." + name);
-}
-
-std::string duration_text(double seconds) {
-  const auto total = static_cast<long long>(seconds + 0.5);
-  char text[32];
-  if (total >= 3600) {
-    std::snprintf(text, sizeof text, "%lldh%02lldm", total / 3600, total / 60 % 60);
-  } else {
-    std::snprintf(text, sizeof text, "%lldm%02llds", total / 60, total % 60);
-  }
-  return text;
 }
 
 std::string best_text(const TrainingReport& report) {

@@ -12,6 +12,7 @@
 #include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
+#include "tendril/core/progress_clock.hpp"
 #include "tendril/envs/wrappers/episode_recorder.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -40,17 +41,6 @@ std::string exact_text(double value) {
   char text[32];
   const auto end = std::to_chars(text, text + sizeof text, value).ptr;
   return std::string(text, end);
-}
-
-std::string duration_text(double seconds) {
-  const auto total = static_cast<long long>(seconds + 0.5);
-  char text[32];
-  if (total >= 3600) {
-    std::snprintf(text, sizeof text, "%lldh%02lldm", total / 3600, total / 60 % 60);
-  } else {
-    std::snprintf(text, sizeof text, "%lldm%02llds", total / 60, total % 60);
-  }
-  return text;
 }
 
 // Whether the step count crossed a multiple of `every` since `previous`.

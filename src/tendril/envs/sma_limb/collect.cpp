@@ -28,7 +28,8 @@ std::array<int, 4> pwm_of(const Info& info) {
 
 }  // namespace
 
-LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& settings, uint64_t seed) {
+LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& settings, uint64_t seed,
+                const std::function<void(double robot_time_s)>& on_reading) {
   require(
       settings.duration_s > 0.0 && settings.hold_readings >= 1 && settings.cutoff_cooldown_s >= 0.0,
       "collection needs a positive duration, holds of at least one reading and a "
@@ -61,6 +62,7 @@ LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& setting
       angles = step.observation.head<2>().cast<double>();
       time = info_value(step.info, "time_s");
       source.observe(angles);
+      if (on_reading) on_reading(time);
       if (cool_until < 0.0 && angles.cwiseAbs().maxCoeff() >= kCutoffDeg) break;
     }
   }

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "tendril/core/env.hpp"
@@ -43,8 +44,9 @@ struct LimbLog {
 
 // Resets `env` (an SmaLimb/Robot-v0 or anything with its observation and info keys) with `seed`
 // and drives it with `source` until the readings reach settings.duration_s. The source draws from
-// its own stream, Rng(seed, 1).
-LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& settings, uint64_t seed);
+// its own stream, Rng(seed, 1). `on_reading`, when set, sees the robot time of every reading.
+LimbLog collect(Env& env, ThrottleSource& source, const CollectSettings& settings, uint64_t seed,
+                const std::function<void(double robot_time_s)>& on_reading = nullptr);
 
 // Resets `env` with `seed` and sends `inputs` open loop, one row per reading, rounded to the
 // robot's integer throttles (the firmware's own cut-off still applies; nothing reacts to the
