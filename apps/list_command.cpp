@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/arguments.hpp"
@@ -51,6 +52,21 @@ Description describe(const envs::Registry& registry, const std::string& id) {
   return d;
 }
 
+// The rows of an environment's description after its summary: (label, value).
+std::vector<std::pair<std::string, std::string>> description_rows(const envs::EnvSpec& spec,
+                                                                  const Description& d) {
+  std::vector<std::pair<std::string, std::string>> rows = {{"time limit", limit_text(spec)}};
+  if (!d.made_with.empty()) rows.emplace_back("made with", d.made_with);
+  if (!d.needs.empty()) {
+    rows.emplace_back("needs", d.needs);
+    return rows;
+  }
+  rows.emplace_back("observation", d.observation);
+  rows.emplace_back("action", d.action);
+  rows.emplace_back("info", d.info.empty() ? "none" : d.info);
+  return rows;
+}
+
 }  // namespace
 
 int list_envs_command(const Arguments& line) {
@@ -68,15 +84,11 @@ int list_envs_command(const Arguments& line) {
     for (const std::string& id : ids) {
       const envs::EnvSpec& spec = registry.spec(id);
       const Description d = describe(registry, id);
-      std::printf("\n## %s\n\n%s.\n\n| | |\n|---|---|\n| time limit | %s |\n", id.c_str(),
-                  spec.summary.c_str(), limit_text(spec).c_str());
-      if (!d.made_with.empty()) std::printf("| made with | `%s` |\n", d.made_with.c_str());
-      if (d.needs.empty()) {
-        std::printf("| observation | `%s` |\n| action | `%s` |\n| info | %s |\n",
-                    d.observation.c_str(), d.action.c_str(),
-                    d.info.empty() ? "none" : d.info.c_str());
-      } else {
-        std::printf("| needs | %s |\n", d.needs.c_str());
+      std::printf("\n## %s\n\n%s.\n\n| | |\n|---|---|\n", id.c_str(), spec.summary.c_str());
+      for (const auto& [label, value] : description_rows(spec, d)) {
+        // Parameters and spaces as code; the time limit, info names and reasons as text.
+        const bool code = label == "made with" || label == "observation" || label == "action";
+        std::printf(code ? "| %s | `%s` |\n" : "| %s | %s |\n", label.c_str(), value.c_str());
       }
     }
     return 0;
@@ -88,15 +100,9 @@ int list_envs_command(const Arguments& line) {
       continue;
     }
     const Description d = describe(registry, id);
-    std::printf("%s: %s\n  time limit   %s\n", id.c_str(), spec.summary.c_str(),
-                limit_text(spec).c_str());
-    if (!d.made_with.empty()) std::printf("  made with    %s\n", d.made_with.c_str());
-    if (d.needs.empty()) {
-      std::printf("  observation  %s\n  action       %s\n  info         %s\n",
-                  d.observation.c_str(), d.action.c_str(),
-                  d.info.empty() ? "none" : d.info.c_str());
-    } else {
-      std::printf("  needs        %s\n", d.needs.c_str());
+    std::printf("%s: %s\n", id.c_str(), spec.summary.c_str());
+    for (const auto& [label, value] : description_rows(spec, d)) {
+      std::printf("  %-12s %s\n", label.c_str(), value.c_str());
     }
   }
   return 0;
