@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
+#include "tendril/core/progress_clock.hpp"
 #include "tendril/dynamics/evaluation.hpp"
 #include "tendril/dynamics/fit_run.hpp"
 #include "tendril/dynamics/model.hpp"
@@ -41,6 +43,41 @@ void print_row(const EvaluationRow& row) {
               static_cast<long long>(row.errors.rollouts));
   std::fflush(stdout);
 }
+
+// The share done of the row being measured, with elapsed time and ETA, on standard error at most
+// once a second; a row measured in under a second prints none.
+class RowProgress {
+ public:
+  void operator()(const std::string& metric, double horizon, double done) {
+    if (metric != metric_ || horizon != horizon_) {
+      finish();
+      metric_ = metric, horizon_ = horizon, clock_ = ProgressClock(), last_print_s_ = -1.0;
+    }
+    const double now = clock_.elapsed_s();
+    if (now < 1.0 || (last_print_s_ >= 0.0 && now - last_print_s_ < 1.0 && done < 1.0)) return;
+    last_print_s_ = now;
+    const std::string eta = clock_.text(done);
+    if (metric.find("rollout") != std::string::npos) {
+      std::fprintf(stderr, "\r  measuring %s %gs: %.1f%%  %s   ", metric.c_str(), horizon,
+                   100.0 * done, eta.c_str());
+    } else {
+      std::fprintf(stderr, "\r  measuring %s: %.1f%%  %s   ", metric.c_str(), 100.0 * done,
+                   eta.c_str());
+    }
+    std::fflush(stderr);
+  }
+  // Ends the row's progress line, if one was printed.
+  void finish() {
+    if (last_print_s_ >= 0.0) std::fputc('\n', stderr);
+    last_print_s_ = -1.0;
+  }
+
+ private:
+  std::string metric_;
+  double horizon_ = 0.0;
+  ProgressClock clock_;
+  double last_print_s_ = -1.0;
+};
 
 // What a fit (or a continued one) did; 128 + the signal when one stopped it.
 int report_fit(const FitResult& result) {
@@ -145,7 +182,8 @@ void write_open_loop(Model& model, const SequenceData& data, const fs::path& dir
 // split by whether the input changed within the last 3 readings (a limb that rings after a
 // throttle change is predictable neither by persistence nor, from noisy rates, by a model).
 std::vector<EvaluationRow> baseline_rows(Model& model, const SequenceData& data, Split split,
-                                         const std::vector<double>& horizons, double max_gap) {
+                                         const std::vector<double>& horizons, double max_gap,
+                                         RowProgress& progress) {
   constexpr int kReadings = 3;
   const WindowSet windows(data, model, max_gap);
   const dynamics::PointFilter changing = [&](int64_t t) {
@@ -160,10 +198,17 @@ std::vector<EvaluationRow> baseline_rows(Model& model, const SequenceData& data,
                     dynamics::persistence_rollout_errors(data, split, horizon, max_gap,
                                                          model.window_length())});
   }
-  rows.push_back({"one_step_input_change", 0.0,
-                  dynamics::one_step_errors(model, windows, split, 256, changing)});
-  rows.push_back({"one_step_steady_input", 0.0,
-                  dynamics::one_step_errors(model, windows, split, 256, steady)});
+  const std::pair<std::string, dynamics::PointFilter> filtered[] = {
+      {"one_step_input_change", changing}, {"one_step_steady_input", steady}};
+  for (const auto& [metric, include] : filtered) {
+    const std::string& name = metric;
+    const dynamics::Progress on_progress = [&progress, &name](double done) {
+      progress(name, 0.0, done);
+    };
+    rows.push_back(
+        {metric, 0.0, dynamics::one_step_errors(model, windows, split, 256, include, on_progress)});
+    progress.finish();
+  }
   rows.push_back({"persistence_one_step_input_change", 0.0,
                   dynamics::persistence_one_step_errors(data, windows, split, changing)});
   rows.push_back({"persistence_one_step_steady_input", 0.0,
@@ -203,10 +248,18 @@ int model_eval_command(const Arguments& line) {
               architecture_name(model->spec().kind).c_str(), model->spec().window,
               split_name.c_str(), line.positional[1].c_str());
   // Each row as soon as it is measured: the rollouts of long horizons take a while.
+  RowProgress progress;
+  const EvaluationObserver observer{.on_row =
+                                        [&progress](const EvaluationRow& row) {
+                                          progress.finish();
+                                          print_row(row);
+                                        },
+                                    .on_progress = std::ref(progress)};
   std::vector<EvaluationRow> rows =
-      evaluate_model(*model, data, split, horizons, max_gap, print_row);
+      evaluate_model(*model, data, split, horizons, max_gap, observer);
   if (line.has("baselines")) {
-    for (const EvaluationRow& row : baseline_rows(*model, data, split, horizons, max_gap)) {
+    for (const EvaluationRow& row :
+         baseline_rows(*model, data, split, horizons, max_gap, progress)) {
       print_row(row);
       rows.push_back(row);
     }

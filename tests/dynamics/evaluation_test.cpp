@@ -114,6 +114,27 @@ TEST(Evaluation, RolloutsCutEachTestSegmentIntoPiecesOfTheHorizon) {
   EXPECT_EQ(whole.points, 15);
 }
 
+// Progress lines: each measurement reports a share done that grows after every model call and
+// reaches 1 with its last one (a batch of 3 windows; the longest of 3 pieces of 5 steps).
+TEST(Evaluation, ProgressGrowsToOneOverTheModelCalls) {
+  SequenceData data = testing::SyntheticLimb{}.generate(100, 6);
+  for (int t = 0; t < 100; ++t) data.time(t) = 0.1 * t;
+  Model model(small_description(Architecture::kRnn), 3);
+  const WindowSet windows(data, model, 1.0);
+  for (const bool rollout : {false, true}) {
+    std::vector<double> shares;
+    const Progress record = [&shares](double done) { shares.push_back(done); };
+    const ErrorReport report =
+        rollout ? rollout_errors(model, data, Split::kTest, 0.5 + 1e-9, 1.0, record)
+                : one_step_errors(model, windows, Split::kTest, 3, {}, record);
+    const int64_t calls = rollout ? 5 : (report.points + 2) / 3;
+    ASSERT_EQ(static_cast<int64_t>(shares.size()), calls) << "rollout " << rollout;
+    for (std::size_t k = 1; k < shares.size(); ++k) EXPECT_GT(shares[k], shares[k - 1]);
+    EXPECT_GT(shares.front(), 0.0);
+    EXPECT_EQ(shares.back(), 1.0);
+  }
+}
+
 // "Predict no change" on a ramp θ = c·t, ω = c, at 0.1 s a row: one step ahead every angle error
 // is c·0.1 and every rate error 0; over a piece of k steps held at its start the angle errors
 // are c·0.1·j, j = 1 … k, so RMSE = c·0.1·√((k + 1)(2k + 1)/6).

@@ -78,7 +78,8 @@ std::vector<int64_t> kept_ends(const std::vector<int64_t>& ends, const PointFilt
 }
 
 ErrorReport one_step_errors_at(Model& model, const WindowSet& windows,
-                               const std::vector<int64_t>& ends, int batch_size);
+                               const std::vector<int64_t>& ends, int batch_size,
+                               const Progress& on_progress);
 
 }  // namespace
 
@@ -103,12 +104,12 @@ std::vector<StateGroup> state_groups(const std::vector<std::string>& state_names
 }
 
 ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split, int batch_size,
-                            const PointFilter& include) {
+                            const PointFilter& include, const Progress& on_progress) {
   if (include) {
     const std::vector<int64_t> kept = kept_ends(windows.ends(split), include);
-    return one_step_errors_at(model, windows, kept, batch_size);
+    return one_step_errors_at(model, windows, kept, batch_size, on_progress);
   }
-  return one_step_errors_at(model, windows, windows.ends(split), batch_size);
+  return one_step_errors_at(model, windows, windows.ends(split), batch_size, on_progress);
 }
 
 ErrorReport persistence_one_step_errors(const SequenceData& data, const WindowSet& windows,
@@ -148,7 +149,8 @@ bool input_changed_within(const SequenceData& data, int64_t t, int readings) {
 namespace {
 
 ErrorReport one_step_errors_at(Model& model, const WindowSet& windows,
-                               const std::vector<int64_t>& ends, int batch_size) {
+                               const std::vector<int64_t>& ends, int batch_size,
+                               const Progress& on_progress) {
   SquaredErrors errors(state_groups(model.description().state_names));
   for (std::size_t begin = 0; begin < ends.size(); begin += static_cast<std::size_t>(batch_size)) {
     const std::span<const int64_t> batch(ends.data() + begin,
@@ -158,6 +160,9 @@ ErrorReport one_step_errors_at(Model& model, const WindowSet& windows,
     const auto p = predicted.accessor<float, 2>();
     const auto r = recorded.accessor<float, 2>();
     for (int64_t i = 0; i < predicted.size(0); ++i) errors.add(p[i], r[i]);
+    if (on_progress) {
+      on_progress(static_cast<double>(begin + batch.size()) / static_cast<double>(ends.size()));
+    }
   }
   const auto count = static_cast<int64_t>(ends.size());
   return errors.report(count, count);
@@ -167,7 +172,7 @@ ErrorReport one_step_errors_at(Model& model, const WindowSet& windows,
 
 std::vector<RowMatrixXd> rollouts(Model& model, const SequenceData& data,
                                   const std::vector<int64_t>& starts,
-                                  const std::vector<int64_t>& steps) {
+                                  const std::vector<int64_t>& steps, const Progress& on_progress) {
   require(starts.size() == steps.size() && !starts.empty(), "needs one step count per start",
           "dynamics::rollouts");
   const int n = model.window_length(), dx = model.state_dim(), du = model.input_dim();
@@ -200,17 +205,18 @@ std::vector<RowMatrixXd> rollouts(Model& model, const SequenceData& data,
     for (int i = 0; i < envs; ++i) {
       if (k < steps[i]) predicted[i].row(k) = next.row(i).cast<double>();
     }
+    if (on_progress) on_progress(static_cast<double>(k + 1) / static_cast<double>(longest));
   }
   return predicted;
 }
 
 ErrorReport rollout_errors(Model& model, const SequenceData& data, Split split, double horizon,
-                           double max_gap) {
+                           double max_gap, const Progress& on_progress) {
   std::vector<int64_t> starts, steps;
   rollout_pieces(data, split, horizon, max_gap, model.window_length(), starts, steps);
   SquaredErrors errors(state_groups(model.description().state_names));
   if (starts.empty()) return errors.report(0, 0);
-  const std::vector<RowMatrixXd> predicted = rollouts(model, data, starts, steps);
+  const std::vector<RowMatrixXd> predicted = rollouts(model, data, starts, steps, on_progress);
   int64_t points = 0;
   for (std::size_t i = 0; i < starts.size(); ++i) {
     for (int64_t k = 0; k < steps[i]; ++k) {

@@ -33,11 +33,14 @@ struct ErrorReport {
 
 // Which window ends t a one-step error pools; every one when empty.
 using PointFilter = std::function<bool(int64_t t)>;
+// Sees the share of a measurement's model calls done (0 to 1) after each call, for progress lines.
+using Progress = std::function<void(double done)>;
 
 // One-step prediction (eq. 4.11): x̂_{t+1} = x_t + φ(recorded window ending at t), for every
 // window of `split` (that `include` accepts).
 ErrorReport one_step_errors(Model& model, const WindowSet& windows, Split split,
-                            int batch_size = 256, const PointFilter& include = {});
+                            int batch_size = 256, const PointFilter& include = {},
+                            const Progress& on_progress = {});
 
 // The "predict no change" baseline on the points the model is measured on: x̂_{t+1} = x_t one
 // step ahead (Δx = 0) over the same windows, and x̂ = the start's recorded state throughout each
@@ -58,13 +61,14 @@ bool input_changed_within(const SequenceData& data, int64_t t, int readings);
 // consecutive pieces of `horizon` seconds of recorded time, each started from the recorded
 // window at its first row; all pieces are rolled out together (one environment each).
 ErrorReport rollout_errors(Model& model, const SequenceData& data, Split split, double horizon,
-                           double max_gap);
+                           double max_gap, const Progress& on_progress = {});
 
 // The recursive prediction of `steps` states after row `start` of `data`, started from the
 // recorded window ending at `start` and driven by the recorded inputs u_start …: rows
 // x̂_{start+1} … x̂_{start+steps}. Several starts run as one batch.
 std::vector<RowMatrixXd> rollouts(Model& model, const SequenceData& data,
                                   const std::vector<int64_t>& starts,
-                                  const std::vector<int64_t>& steps);
+                                  const std::vector<int64_t>& steps,
+                                  const Progress& on_progress = {});
 
 }  // namespace tendril::dynamics

@@ -90,14 +90,22 @@ FitExperiment FitExperiment::from_config(Config config) {
 
 std::vector<EvaluationRow> evaluate_model(Model& model, const SequenceData& data, Split split,
                                           const std::vector<double>& horizons, double max_gap,
-                                          const std::function<void(const EvaluationRow&)>& on_row) {
+                                          const EvaluationObserver& observer) {
+  const auto progress_of = [&observer](const std::string& metric, double horizon) -> Progress {
+    if (!observer.on_progress) return {};
+    return
+        [&observer, metric, horizon](double done) { observer.on_progress(metric, horizon, done); };
+  };
   std::vector<EvaluationRow> rows;
   const WindowSet windows(data, model, max_gap);
-  rows.push_back({"one_step", 0.0, one_step_errors(model, windows, split)});
-  if (on_row) on_row(rows.back());
+  rows.push_back({"one_step", 0.0,
+                  one_step_errors(model, windows, split, 256, {}, progress_of("one_step", 0.0))});
+  if (observer.on_row) observer.on_row(rows.back());
   for (double horizon : horizons) {
-    rows.push_back({"rollout", horizon, rollout_errors(model, data, split, horizon, max_gap)});
-    if (on_row) on_row(rows.back());
+    rows.push_back(
+        {"rollout", horizon,
+         rollout_errors(model, data, split, horizon, max_gap, progress_of("rollout", horizon))});
+    if (observer.on_row) observer.on_row(rows.back());
   }
   return rows;
 }

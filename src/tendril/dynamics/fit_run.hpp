@@ -75,11 +75,17 @@ bool is_stopped_fit(const std::filesystem::path& run_directory);
 // data file is found from the working directory, as when the fit began).
 FitResult resume_fit(const std::filesystem::path& run_directory, bool quiet = false);
 
-// One-step errors and rollouts of every horizon on `split` of `data` (rows in the order given);
-// `on_row`, if given, sees each row as soon as it is measured (long rollouts take a while).
-std::vector<EvaluationRow> evaluate_model(
-    Model& model, const SequenceData& data, Split split, const std::vector<double>& horizons,
-    double max_gap, const std::function<void(const EvaluationRow&)>& on_row = {});
+// What watches an evaluation: each row as soon as it is measured (long rollouts take a while),
+// and the share done of the row being measured (metric and horizon as its row will name them).
+struct EvaluationObserver {
+  std::function<void(const EvaluationRow&)> on_row;
+  std::function<void(const std::string& metric, double horizon, double done)> on_progress;
+};
+
+// One-step errors and rollouts of every horizon on `split` of `data` (rows in the order given).
+std::vector<EvaluationRow> evaluate_model(Model& model, const SequenceData& data, Split split,
+                                          const std::vector<double>& horizons, double max_gap,
+                                          const EvaluationObserver& observer = {});
 
 // Writes rows as CSV (metric,horizon_s,group,unit,rmse,points,rollouts), atomically; raises
 // Error if `file` exists.
