@@ -11,8 +11,8 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
-#include "tendril/core/progress_clock.hpp"
 #include "tendril/dynamics/evaluation.hpp"
+#include "tendril/dynamics/evaluation_progress.hpp"
 #include "tendril/dynamics/fit_run.hpp"
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
@@ -43,41 +43,6 @@ void print_row(const EvaluationRow& row) {
               static_cast<long long>(row.errors.rollouts));
   std::fflush(stdout);
 }
-
-// The share done of the row being measured, with elapsed time and ETA, on standard error at most
-// once a second; a row measured in under a second prints none.
-class RowProgress {
- public:
-  void operator()(const std::string& metric, double horizon, double done) {
-    if (metric != metric_ || horizon != horizon_) {
-      finish();
-      metric_ = metric, horizon_ = horizon, clock_ = ProgressClock(), last_print_s_ = -1.0;
-    }
-    const double now = clock_.elapsed_s();
-    if (now < 1.0 || (last_print_s_ >= 0.0 && now - last_print_s_ < 1.0 && done < 1.0)) return;
-    last_print_s_ = now;
-    const std::string eta = clock_.text(done);
-    if (metric.find("rollout") != std::string::npos) {
-      std::fprintf(stderr, "\r  measuring %s %gs: %.1f%%  %s   ", metric.c_str(), horizon,
-                   100.0 * done, eta.c_str());
-    } else {
-      std::fprintf(stderr, "\r  measuring %s: %.1f%%  %s   ", metric.c_str(), 100.0 * done,
-                   eta.c_str());
-    }
-    std::fflush(stderr);
-  }
-  // Ends the row's progress line, if one was printed.
-  void finish() {
-    if (last_print_s_ >= 0.0) std::fputc('\n', stderr);
-    last_print_s_ = -1.0;
-  }
-
- private:
-  std::string metric_;
-  double horizon_ = 0.0;
-  ProgressClock clock_;
-  double last_print_s_ = -1.0;
-};
 
 // What a fit (or a continued one) did; 128 + the signal when one stopped it.
 int report_fit(const FitResult& result) {
@@ -183,7 +148,7 @@ void write_open_loop(Model& model, const SequenceData& data, const fs::path& dir
 // throttle change is predictable neither by persistence nor, from noisy rates, by a model).
 std::vector<EvaluationRow> baseline_rows(Model& model, const SequenceData& data, Split split,
                                          const std::vector<double>& horizons, double max_gap,
-                                         RowProgress& progress) {
+                                         EvaluationProgress& progress) {
   constexpr int kReadings = 3;
   const WindowSet windows(data, model, max_gap);
   const dynamics::PointFilter changing = [&](int64_t t) {
@@ -248,7 +213,7 @@ int model_eval_command(const Arguments& line) {
               architecture_name(model->spec().kind).c_str(), model->spec().window,
               split_name.c_str(), line.positional[1].c_str());
   // Each row as soon as it is measured: the rollouts of long horizons take a while.
-  RowProgress progress;
+  EvaluationProgress progress;
   const EvaluationObserver observer{.on_row =
                                         [&progress](const EvaluationRow& row) {
                                           progress.finish();

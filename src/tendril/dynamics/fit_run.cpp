@@ -2,12 +2,14 @@
 
 #include <charconv>
 #include <cstdio>
+#include <functional>
 #include <limits>
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/run_lock.hpp"
 #include "tendril/core/scalar_log.hpp"
+#include "tendril/dynamics/evaluation_progress.hpp"
 #include "tendril/dynamics/model.hpp"
 #include "tendril/dynamics/model_file.hpp"
 #include "tendril/dynamics/torch_threads.hpp"
@@ -184,7 +186,11 @@ FitResult fit(const FitExperiment& e, const fs::path& run_directory, bool quiet,
                    "rollout horizons...\n",
                    e.horizons.size());
     }
-    result.evaluation = evaluate_model(*model, data, Split::kTest, e.horizons, max_gap);
+    EvaluationProgress progress;
+    EvaluationObserver observer;
+    if (!quiet) observer.on_progress = std::ref(progress);
+    result.evaluation = evaluate_model(*model, data, Split::kTest, e.horizons, max_gap, observer);
+    progress.finish();
     write_evaluation_csv(result.evaluation, run_directory / "evaluation.csv");
   }
   return result;
