@@ -20,6 +20,7 @@
 #include "tendril/adapt/pneumatic_reaching_robot.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/core/interrupt.hpp"
 #include "tendril/core/run_lock.hpp"
 #include "tendril/rl/policy.hpp"
@@ -158,7 +159,7 @@ void claim_output(const fs::path& output, const std::string& resolved) {
 }  // namespace
 
 int adapt_command(const Arguments& line) {
-  const Config config = line.load_config();
+  const Config config = line.load_config(file_kind::kAdaptation);
   const std::string method = config.get<std::string>("method");
   require(method == "gprca" || method == "boac", "must be gprca or boac, got '" + method + "'",
           config.where("method"));
@@ -197,9 +198,9 @@ int adapt_command(const Arguments& line) {
   // task, robot and model are checked key by key by the environments built from their copies
   // (reject_unknown above), gprca and boac by their readers; here the file's own keys.
   for (const std::string& key : config.keys()) {
-    static const std::vector<std::string> kKnown{"method", "policies", "task",      "robot",
-                                                 "model",  "goals",    "scenarios", "seeds",
-                                                 "gprca",  "boac",     "output"};
+    static const std::vector<std::string> kKnown{"kind",  "method", "policies", "task",
+                                                 "robot", "model",  "goals",    "scenarios",
+                                                 "seeds", "gprca",  "boac",     "output"};
     require(std::find(kKnown.begin(), kKnown.end(), key) != kKnown.end(),
             "unknown key '" + key + "'", config.source());
   }

@@ -15,6 +15,7 @@
 #include "collect_support.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/core/scene.hpp"
 #include "tendril/data/limb_data_set.hpp"
 #include "tendril/data/prepare.hpp"
@@ -188,7 +189,7 @@ int collect_data(const Config& config, const std::string& task) {
 }  // namespace
 
 int limb_protocol(const Arguments& line, const std::vector<std::string>& tasks) {
-  const Config config = line.load_config();
+  const Config config = line.load_config(file_kind::kDataProtocol);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress lines appear as they are printed
   const std::string task = config.get<std::string>("task");
   if (std::find(tasks.begin(), tasks.end(), task) == tasks.end()) {

@@ -7,6 +7,7 @@
 #include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 
 namespace tendril::apps {
 
@@ -19,7 +20,7 @@ namespace {
 
 // SMA limb files name their protocol in `task:` and their outputs in the file.
 bool is_limb_file(const Arguments& line) {
-  const bool limb = line.load_config().has("task");
+  const bool limb = line.load_config(file_kind::kDataProtocol).has("task");
   require(!limb || !line.has("output"),
           "an SMA limb file names its outputs itself: change them with --set output=...",
           "--output");

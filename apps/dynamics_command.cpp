@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/core/interrupt.hpp"
 #include "tendril/dynamics/evaluation.hpp"
 #include "tendril/dynamics/evaluation_progress.hpp"
@@ -73,7 +74,8 @@ int report_fit(const FitResult& result) {
 }  // namespace
 
 int model_fit_command(const Arguments& line) {
-  const FitExperiment experiment = FitExperiment::from_config(line.load_config());
+  const FitExperiment experiment =
+      FitExperiment::from_config(line.load_config(file_kind::kModelFit));
   fs::path run = line.value("output", "");
   if (run.empty()) {
     const std::time_t now = std::time(nullptr);

@@ -5,13 +5,14 @@
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/envs/pneumatic/collect_dataset.hpp"
 #include "tendril/envs/pneumatic/reach_task.hpp"
 
 namespace tendril::apps {
 
 int pneumatic_collect(const Arguments& line) {
-  const Config config = line.load_config();
+  const Config config = line.load_config(file_kind::kDataProtocol);
   std::string invocation = "tendril data collect";
   for (const std::string& arg : line.raw) invocation += " " + arg;
   const envs::pneumatic::CollectionReport report =

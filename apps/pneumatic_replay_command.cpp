@@ -8,13 +8,14 @@
 #include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/envs/pneumatic/open_loop_reach.hpp"
 #include "tendril/envs/pneumatic/replay_trials.hpp"
 
 namespace tendril::apps {
 
 int pneumatic_replay(const Arguments& line) {
-  const Config config = line.load_config();
+  const Config config = line.load_config(file_kind::kDataProtocol);
   const std::string directory = line.value("output", config.get_or<std::string>("output", ""));
   require(!directory.empty(), "no output directory: set `output` or pass -o", config.source());
   std::string invocation = "tendril data replay";

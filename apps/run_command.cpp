@@ -194,8 +194,8 @@ int run_command(const Arguments& line) {
     fs::path critic_file = line.value("filter");
     if (fs::is_directory(critic_file)) critic_file /= "safety.critic";
     critic = safety::load_safety_critic(critic_file);
-    filtered = std::make_unique<safety::FilteredPolicy>(
-        *policy, *critic, line.number("epsilon", 0.0, -1e300, 1e300));
+    filtered = std::make_unique<safety::FilteredPolicy>(*policy, *critic,
+                                                        line.number("epsilon", 0.0, -1e300, 1e300));
     policy = filtered.get();
   }
 #else
@@ -203,7 +203,8 @@ int run_command(const Arguments& line) {
 #endif
   envs::RunResult result;
   std::string how = settings.deterministic ? "deterministic" : "stochastic";
-  if (line.has("filter")) how += ", through the safety filter at epsilon_2 " + line.value("epsilon");
+  if (line.has("filter"))
+    how += ", through the safety filter at epsilon_2 " + line.value("epsilon");
   if (line.has("open-loop")) {
     require(settings.episodes > 0 && !trace && !recording && !line.has("filter"),
             "--open-loop replays whole episodes, without --trace, --record or --filter",

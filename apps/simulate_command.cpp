@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/physics/arms/elastica_arm.hpp"
 
 namespace tendril::apps {
@@ -82,7 +83,7 @@ fs::path output_directory(const Arguments& line, const std::string& configured) 
 }  // namespace
 
 int simulate_command(const Arguments& line) {
-  const Config config = line.load_config();
+  const Config config = line.load_config(file_kind::kSimulation);
   ElasticaArmSpec spec = arm_spec_from(config.child("arm"));
   const Eigen::VectorXd targets = actuation_from(config.child("actuation"), spec.actuation);
   const double duration = config.get<double>("duration");

@@ -9,6 +9,7 @@
 #include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/core/interrupt.hpp"
 #include "tendril/rl/trainer.hpp"
 
@@ -79,7 +80,7 @@ int resume_command(const Arguments& line) {
 }
 
 int train_command(const Arguments& line) {
-  const Config config = line.load_config();
+  const Config config = line.load_config(file_kind::kExperiment);
   const rl::TrainOptions options = train_options(line);
 #ifdef TENDRIL_WITH_SAFETY
   // Safety co-training (a `safety:` section) and the constrained baselines (`constrained:`).

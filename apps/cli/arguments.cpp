@@ -8,6 +8,7 @@
 #include "cli/command.hpp"
 #include "cli/suggestion.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 
 namespace tendril::apps {
 
@@ -221,8 +222,9 @@ void Arguments::exclusive(const std::string& first, const std::string& second) c
   if (has(first) && has(second)) usage("--" + first + " and --" + second + " exclude each other");
 }
 
-Config Arguments::load_config() const {
+Config Arguments::load_config(std::string_view kind) const {
   Config config = Config::load_file(positional.at(0));
+  expect_kind(config, kind);
   for (const auto& [key, text] : overrides) config.set(key, text);
   return config;
 }

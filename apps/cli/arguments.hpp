@@ -44,8 +44,9 @@ class Arguments {
   // Refuses two options given together.
   void exclusive(const std::string& first, const std::string& second) const;
 
-  // Loads the first positional as a YAML file and applies the --set overrides.
-  Config load_config() const;
+  // Loads the first positional as a YAML file of `kind` (core/file_kind.hpp) and applies the
+  // --set overrides.
+  Config load_config(std::string_view kind) const;
 
  private:
   std::vector<std::pair<std::string, std::string>> options_;  // name, value ("" for switches)

@@ -80,11 +80,26 @@ class InRepositoryRoot : public ::testing::Test {
   std::filesystem::path previous_;
 };
 
+// Every file says what it is, and it is what the other tests below read it as.
+TEST_F(InRepositoryRoot, EveryShippedFileNamesItsKind) {
+  const std::vector<std::string> kinds = {"experiment",    "sweep",       "model_fit", "adaptation",
+                                          "data_protocol", "calibration", "simulation"};
+  for (const auto& file : yaml_files()) {
+    SCOPED_TRACE(file.string());
+    const Config config = Config::load_file(file);
+    ASSERT_TRUE(config.has("kind"));
+    const std::string kind = config.get<std::string>("kind");
+    EXPECT_NE(std::find(kinds.begin(), kinds.end(), kind), kinds.end()) << kind;
+    EXPECT_EQ(kind == "experiment", config.has("algorithm") && !config.has("grid"));
+    EXPECT_EQ(kind == "sweep", config.has("grid"));
+  }
+}
+
 TEST_F(InRepositoryRoot, EveryShippedTrainingExperimentReads) {
   int experiments = 0;
   for (const auto& file : yaml_files()) {
     const Config config = Config::load_file(file);
-    if (!config.has("algorithm") || config.has("grid")) continue;
+    if (config.get<std::string>("kind") != "experiment") continue;
     ++experiments;
     SCOPED_TRACE(file.string());
     expect_reads(file, [&] { safety::task_experiment_of_config(config); });
@@ -95,7 +110,7 @@ TEST_F(InRepositoryRoot, EveryShippedTrainingExperimentReads) {
 TEST_F(InRepositoryRoot, EveryRunOfEveryShippedSweepReads) {
   int sweeps = 0;
   for (const auto& file : yaml_files()) {
-    if (!Config::load_file(file).has("grid")) continue;
+    if (Config::load_file(file).get<std::string>("kind") != "sweep") continue;
     ++sweeps;
     SCOPED_TRACE(file.string());
     const rl::Sweep sweep = rl::Sweep::load(file);

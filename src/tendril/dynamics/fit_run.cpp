@@ -7,6 +7,7 @@
 
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/core/run_lock.hpp"
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/dynamics/evaluation_progress.hpp"
@@ -58,6 +59,7 @@ double segment_gap(const SequenceData& data, double configured) {
 }
 
 FitExperiment FitExperiment::from_config(Config config) {
+  expect_kind(config, file_kind::kModelFit);
   FitExperiment e;
   e.config = config;
   const Config data = config.child("data");

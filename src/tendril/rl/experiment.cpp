@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/rl/algorithm_registry.hpp"
 
 namespace tendril::rl {
@@ -19,6 +20,7 @@ std::string key(const Config& config, const std::string& name) {
 }  // namespace
 
 Experiment Experiment::from_config(Config config) {
+  expect_kind(config, file_kind::kExperiment);
   Experiment e;
   e.config = config;
   e.algorithm = config.get<std::string>("algorithm");

@@ -1,12 +1,14 @@
 #include "tendril/rl/sweep.hpp"
 
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 #include "tendril/rl/experiment.hpp"
 
 namespace tendril::rl {
 
 Sweep Sweep::load(const std::filesystem::path& file) {
   const Config config = Config::load_file(file);
+  expect_kind(config, file_kind::kSweep);
   Sweep sweep;
   sweep.experiment_file = file.parent_path() / config.get<std::string>("experiment");
   for (const Config& axis : config.children("grid")) {

@@ -7,6 +7,7 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/config.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/file_kind.hpp"
 
 namespace tendril::envs::sma_limb {
 
@@ -63,6 +64,7 @@ void LimbCalibration::validate(const std::string& where) const {
 
 LimbCalibration LimbCalibration::load(const std::filesystem::path& file) {
   const Config config = Config::load_file(file);
+  expect_kind(config, file_kind::kCalibration);
   LimbCalibration calibration;
   calibration.limb = config.get<std::string>("limb");
   const std::vector<double> offset = config.get<std::vector<double>>("zero_offset_deg");
@@ -89,7 +91,8 @@ std::string LimbCalibration::to_yaml() const {
       "# (of 255, at 11.1 V) that moved the limb faster than the sensor's velocity noise floor\n"
       "# (lower_pwm, throttle 1) and the first that bent it to 100 degrees within a hold\n"
       "# (upper_pwm, throttle 10); the sensor's zero offsets (degrees, subtracted from its\n"
-      "# readings) and the noise floor (degrees per second).\n";
+      "# readings) and the noise floor (degrees per second).\n"
+      "kind: calibration\n";
   char line[160];
   std::snprintf(line, sizeof line, "limb: %s\nzero_offset_deg: [%.2f, %.2f]\n", limb.c_str(),
                 zero_offset_deg.x(), zero_offset_deg.y());
