@@ -3,15 +3,21 @@
 
 Each check regenerates a table row or a sentence's numbers from a file beside a page
 (docs/results/...) and requires the page to carry that text verbatim, so a page left stale after
-its file changed (or a number typed by hand) fails. Python's standard library only.
+its file changed (or a number typed by hand) fails. Every results page opens with its "Headline
+numbers" table (3-8 rows: what is measured, the paper's number, tendril's, a verdict, where it is
+read from); each row must name a file that exists or a section of the page, and the rows that
+name a committed file have their tendril number regenerated from it. Python's standard library
+only.
   python3 tests/docs/results_numbers_test.py SOURCE_DIR
 """
 import csv
 import math
 import os
+import re
 import statistics
 import subprocess
 import sys
+import unicodedata
 
 ROOT = sys.argv[1] if len(sys.argv) > 1 else "."
 RESULTS = os.path.join(ROOT, "docs", "results")
@@ -23,8 +29,14 @@ def page(name):
 
 
 def rows(path):
+    """A CSV beside the pages, its `#` comment lines skipped."""
     with open(os.path.join(RESULTS, path), newline="") as file:
-        return list(csv.DictReader(file))
+        return list(csv.DictReader(line for line in file if not line.startswith("#")))
+
+
+def minus(text):
+    """Negative numbers as the pages write them (U+2212)."""
+    return text.replace("-", "\u2212")
 
 
 def sma_limb_rl_tables():
@@ -103,6 +115,334 @@ def pneumatic_open_loop_spread():
             [f"({min(distances):.1f}–{max(distances):.1f} mm over the {len(distances)} trials"])
 
 
+# --- The headline tables -------------------------------------------------------------------------
+
+HEADLINE_HEADING = "## Headline numbers"
+
+
+def slug(heading):
+    """The anchor mkdocs' toc extension gives a heading (its default slugify)."""
+    text = unicodedata.normalize("NFKD", heading.replace("`", ""))
+    text = re.sub(r"[^\w\s-]", "", text.encode("ascii", "ignore").decode("ascii")).strip().lower()
+    return re.sub(r"[-\s]+", "-", text)
+
+
+def cells(line):
+    return [cell.strip() for cell in line.strip().strip("|").split("|")]
+
+
+def headline_table(name):
+    """The page's headline rows by their first cell, and the problems with the table's shape."""
+    lines = page(name).split("\n")
+    problems = []
+    opening = lines.index(HEADLINE_HEADING) if HEADLINE_HEADING in lines else 0
+    between = [line for line in lines[1:opening] if line.strip()]
+    if (not lines[0].startswith("# ") or not between
+            or not between[0].startswith("> Build mode") or any(
+                not line.startswith(">") for line in between)):
+        return {}, [f"does not open with its title, the build-mode line and '{HEADLINE_HEADING}'"]
+    start = opening + 2
+    table = []
+    for line in lines[start:]:
+        if not line.startswith("|"):
+            break
+        table.append(cells(line))
+    header, rows_ = (table[0], table[2:]) if len(table) > 2 else ([], [])
+    if (len(header) != 5 or header[0] or not header[1].startswith("paper")
+            or not header[2].startswith("tendril") or header[3:] != ["verdict", "read from"]):
+        problems.append(f"headline header is {header}, "
+                        "not | | paper … | tendril … | verdict | read from |")
+    if not 3 <= len(rows_) <= 8:
+        problems.append(f"headline table has {len(rows_)} rows, not 3-8")
+    anchors = {slug(line.lstrip("#").strip()) for line in lines if re.match(r"#{2,6} ", line)}
+    for row in rows_:
+        if len(row) != 5 or not all(row[1:]):
+            problems.append(f"headline row {row[0]!r} has an empty or missing cell")
+            continue
+        files = re.findall(r"`([^`]+)`", row[4])
+        links = re.findall(r"\]\(#([^)]+)\)", row[4])
+        if not files and not links:
+            problems.append(f"headline row {row[0]!r} names neither a file nor a section")
+        for file in files:
+            if not (os.path.exists(os.path.join(RESULTS, file))
+                    or os.path.exists(os.path.join(ROOT, file))):
+                problems.append(f"headline row {row[0]!r} reads from {file}, which does not exist")
+        for link in links:
+            if link not in anchors:
+                problems.append(f"headline row {row[0]!r} links #{link}, no heading of the page")
+    return {row[0]: row for row in rows_}, problems
+
+
+def mean_sd(values, digits, population=True):
+    spread = statistics.pstdev(values) if population else statistics.stdev(values)
+    return minus(f"{statistics.mean(values):.{digits}f} ± {spread:.{digits}f}")
+
+
+def headline_safety_filter():
+    name = "safety_filter.md"
+    co_trained = [row for row in rows("safety_filter/table_6_1.csv")
+                  if row["method"] == "co_trained"]
+    epsilons = [float(row["epsilon"]) for row in rows("safety_filter/epsilon_search.csv")]
+    ppo = [float(row["filtered_safety_rate"]) for row in rows("safety_filter/table_6_2.csv")
+           if row["method"] == "dubins_ppo"]
+    grid = rows("safety_filter/double_integrator_map.csv")
+    learned = [row for row in grid if float(row["value"]) > 0]
+    outside = sum(row["analytic_safe"] == "0" for row in learned)
+    diamond = rows("safety_filter/limb_diamond.csv")
+
+    def violations(epsilon):
+        trials = [row for row in diamond if float(row["epsilon"]) == epsilon]
+        hits = sum(not math.isnan(float(row["time_to_violation_s"])) for row in trials)
+        return f"{hits} of {len(trials)} at ε₂ = {epsilon}"
+
+    return [
+        (name, "Dubins car, filtered policy: safety rate", "safety_filter/table_6_1.csv",
+         mean_sd([float(row["filtered_safety_rate"]) for row in co_trained], 3)),
+        (name, "Dubins car, filtered policy: return", "safety_filter/table_6_1.csv",
+         mean_sd([float(row["filtered_return"]) for row in co_trained], 2)),
+        (name, "Dubins car: steps the filter takes over", "safety_filter/table_6_1.csv",
+         mean_sd([float(row["intervention_rate"]) for row in co_trained], 2)),
+        (name, "Dubins car: Algorithm 3's ε₂", "safety_filter/epsilon_search.csv",
+         minus(f"{min(epsilons):.2f} to {max(epsilons):.2f} over the {len(epsilons)} seeds")),
+        (name, "Dubins car, filter on PPO not co-trained: safety rate",
+         "safety_filter/table_6_2.csv", mean_sd(ppo, 3)),
+        (name, "double integrator: learned safe set at ε₂ = 0 outside the analytic set",
+         "safety_filter/double_integrator_map.csv", f"{outside} of {len(learned)} grid points"),
+        (name, "limb diamond: trials leaving the 30° circle", "safety_filter/limb_diamond.csv",
+         f"{violations(90)}, {violations(270)}"),
+    ]
+
+
+def headline_pneumatic_adaptation():
+    name = "pneumatic_adaptation.md"
+    expected = []
+    for method, label in (("gprca", "GPRCA"), ("boac", "BOAC")):
+        source = f"pneumatic_adaptation/{method}/summary.csv"
+        runs = rows(source)
+        reached = [row for row in runs if row["goal_flag"] == "1"]
+        accuracy = [float(row["final_distance_mm"]) for row in reached]
+        online = [float(row["robot_s"]) for row in reached]
+        expected += [
+            (name, f"{label}: final accuracy where the goal was reached", source,
+             f"{mean_sd(accuracy, 2)} mm ({len(reached)} runs)"),
+            (name, f"{label}: online time where the goal was reached", source,
+             f"{mean_sd(online, 1)} s"),
+            (name, f"{label}: how often the goal is reached", source,
+             f"{len(reached)} of {len(runs)} runs")]
+        if method == "gprca":
+            expected.append((name, "GPRCA: the learner's work in one 10 Hz step, largest", source,
+                             f"{max(float(row['max_update_ms']) for row in runs):.1f} ms"))
+        else:
+            oracle = [float(row["oracle_robot_s"]) for row in reached]
+            expected.append((name, "BOAC: online time where the goal was reached", source,
+                             f"plus {min(oracle):.1f}–{max(oracle):.1f} s of oracle trials"))
+    return expected
+
+
+def headline_pneumatic_arm():
+    name = "pneumatic_arm.md"
+    open_loop = rows("pneumatic_arm/learned/open_loop_S0.csv")
+    closed_loop = rows("pneumatic_arm/learned/closed_loop_S0.csv")
+    plans = [float(row["final_distance_mm"])
+             for row in rows("pneumatic_arm/calibration/e0.10_d10_c40/open_loop_reach.csv")
+             if row["scenario"] == "S0"]
+    errors = {(row["metric"], row["group"]): float(row["rmse"])
+              for row in rows("pneumatic_arm/learned/model_error_s0.csv")}
+    gap = rows("pneumatic_arm/model_gap/replay_gap.csv")
+    module3 = {}
+    for row in gap:
+        if row["module"] == "3":
+            module3.setdefault(row["scenario"], []).append(float(row["mad_from_reference_mm"]))
+    order = sorted(module3, key=lambda scenario: -statistics.mean(module3[scenario]))
+
+    def share(values):
+        return f"{100 * statistics.mean(values):.0f} %"
+
+    return [
+        (name, "the PPO policy open loop, intact arm: success within 5 mm",
+         "pneumatic_arm/learned/open_loop_S0.csv",
+         f"{share([float(row['is_success']) for row in open_loop])} ({len(open_loop)} trials)"),
+        (name, "the PPO policy open loop, intact arm: final distance",
+         "pneumatic_arm/learned/open_loop_S0.csv",
+         f"{mean_sd([float(row['goal_distance_mm']) for row in open_loop], 1)} mm"),
+        (name, "the PPO policy closed loop, intact arm: success within 15 mm / collisions",
+         "pneumatic_arm/learned/closed_loop_S0.csv",
+         f"{share([float(row['is_success']) for row in closed_loop])} / "
+         f"{share([float(row['collision']) for row in closed_loop])} ({len(closed_loop)} trials)"),
+        (name, "perfect-model plans open loop, intact arm: within 5 mm / within 15–25 mm",
+         "pneumatic_arm/calibration/e0.10_d10_c40/open_loop_reach.csv",
+         f"{share([d <= 5 for d in plans])} / {share([15 <= d <= 25 for d in plans])} "
+         f"({len(plans)} trials, {mean_sd(plans, 2)} mm)"),
+        (name, "the LSTM's 60 s rollout error, module 3, intact arm",
+         "pneumatic_arm/learned/model_error_s0.csv",
+         f"{math.sqrt(sum(errors[('rollout', axis + '3')] ** 2 for axis in 'xyz')):.1f} mm RMS"),
+        (name, "model-vs-arm gap across damage scenarios, module 3",
+         "pneumatic_arm/model_gap/replay_gap.csv",
+         " > ".join(order) + " (" +
+         ", ".join(f"{statistics.mean(module3[s]):.2f}" for s in order) + " mm)"),
+    ]
+
+
+def headline_learned_dynamics():
+    source = "learned_dynamics/table4_1_seq2seq_baselines.csv"
+    errors = {(row["metric"], row["horizon_s"], row["group"]): float(row["rmse"])
+              for row in rows(source)}
+    name = "learned_dynamics.md"
+    return [
+        (name, "Seq2Seq, stiff limb: one-step angle RMSE", source,
+         f"{errors[('one_step', '0', 'angle')]:.2f}°"),
+        (name, "Seq2Seq, stiff limb: one-step velocity RMSE", source,
+         f"{errors[('one_step', '0', 'velocity')]:.2f} °/s (predicting no change: "
+         f"{errors[('persistence_one_step', '0', 'velocity')]:.2f})"),
+        (name, "Seq2Seq, stiff limb: 60 s rollout angle RMSE", source,
+         f"{errors[('rollout', '60', 'angle')]:.2f}°"),
+    ]
+
+
+def headline_sma_limb():
+    name = "sma_limb.md"
+    expected = []
+
+    def span(values, text):
+        low, high = text(min(values)), text(max(values))
+        return low if low == high else f"{low}–{high}"
+
+    def percent(pwm):
+        return f"{100 * pwm / 255:.1f}"  # the duty of the 8-bit PWM
+
+    for limb in ("stiff", "soft"):
+        source = f"sma_limb/fig4_1_calibration_curves_{limb}.csv"
+        curves = rows(source)
+        lower = [int(row["pwm"]) for row in curves if row["lower"] == "1"]
+        upper = [int(row["pwm"]) for row in curves if row["upper"] == "1"]
+        label = ("stiff limb: lower / upper input bound (PWM duty)" if limb == "stiff"
+                 else "soft limb: lower / upper input bound")
+        expected.append((name, label, source,
+                         f"{span(lower, percent)} % / {span(upper, percent)} % "
+                         f"(PWM {span(lower, str)} / {span(upper, str)})"))
+        source = f"sma_limb/fig4_2_coverage_{limb}.csv"
+        coverage = rows(source)
+        evenness = {kind: {row["seed"]: float(row["evenness"]) for row in coverage
+                           if row["source"] == kind} for kind in ("explore", "babble")}
+        ahead = sum(evenness["explore"][seed] > evenness["babble"][seed]
+                    for seed in evenness["explore"])
+        expected.append((
+            name, f"{limb} limb, first 10 min: evenness of exploration / babbling", source,
+            f"{mean_sd(list(evenness['explore'].values()), 3, population=False)} / "
+            f"{mean_sd(list(evenness['babble'].values()), 3, population=False)} "
+            f"(more even on {ahead} of {len(evenness['explore'])} seeds)"))
+    with open(os.path.join(ROOT, "data", "sma_limb", "stiff_exploration.csv")) as file:
+        readings = sum(1 for line in file if not line.startswith("#")) - 1
+    expected.append((name, "stiff exploration data set", "data/sma_limb/stiff_exploration.csv",
+                     f"{readings:,} readings"))
+    return expected
+
+
+def headline_sma_limb_rl():
+    name = "sma_limb_rl.md"
+    runs = rows("sma_limb_rl/training_runs.csv")
+    tracking = {(row["log"], row["pattern"]): row for row in rows("sma_limb_rl/tracking.csv")}
+
+    def success(head):
+        rates = [float(row["success_final"]) for row in runs
+                 if re.fullmatch(rf"table51_{head}_seed\d+", row["run"])]
+        return f"{mean_sd(rates, 2, population=False)} ({len(rates)} seeds"
+
+    def average(log, paths):
+        """Mean RMSE over the paths, None unless every one was finished."""
+        picked = [tracking[(log + suffix, pattern)] for suffix, pattern in paths]
+        if any(row["finished"] != "yes" for row in picked):
+            return None
+        return sum(float(row["rmse_deg"]) for row in picked) / len(picked)
+
+    shapes = [("", "spiral"), ("", "square"), ("", "sml")]
+    tests = [("_push", "circle"), ("_soft", "circle"), ("_load10", "circle")]
+    policies = {seed: [average(f"lk_encoder_seed{seed}_{actions}", shapes)
+                       for actions in ("mean", "sampled")] for seed in "012"}
+    tracked = [value for values in policies.values() for value in values]
+    robust = {seed: [v for v in (average(f"lk_encoder_seed{seed}_{actions}", tests)
+                                 for actions in ("mean", "sampled")) if v is not None]
+              for seed in "012"}
+    late = robust["1"] + robust["2"]
+    return [
+        (name, "LK Encoder head: success at 1° in the learned model",
+         "sma_limb_rl/training_runs.csv", success("lk_encoder")),
+        (name, "MLP No Head: success at 1°", "sma_limb_rl/training_runs.csv", success("no_head")),
+        (name, "LK Encoder policy tracking spiral, square and SML: mean RMSE",
+         "sma_limb_rl/tracking.csv", f"{min(tracked):.2f}–{max(tracked):.2f}° (3 seeds"),
+        (name, "PID tracking spiral, square and SML: mean RMSE", "sma_limb_rl/tracking.csv",
+         f"{average('pid', shapes):.2f}°"),
+        (name, "robustness on the circle (push, soft limb, 10 g): LK Encoder against PID",
+         "sma_limb_rl/tracking.csv",
+         f"{min(late):.2f}–{max(late):.2f}° (seeds 1 and 2) and "
+         + ", ".join(f"{value:.2f}" for value in robust["0"])
+         + f"° (seed 0) against {average('pid', tests):.2f}°"),
+    ]
+
+
+def headline_implicit_rods():
+    name, source = "implicit_rods.md", "implicit_rods/accuracy.csv"
+    table = [row for row in rows(source) if row["integrator"] != "verlet"]
+    within = sum(row["within_tolerance"] == "1" for row in table)
+    schemes = {"backward_euler": "backward Euler", "bdf2": "BDF2"}
+
+    def deviation(row):
+        value = f"{float(row['max_deviation']):.3g}"
+        return f"{value}°" if row["unit"] == "deg" else f"{value} {row['unit']}"
+
+    def fastest(robot):
+        row = max((row for row in table if row["robot"] == robot),
+                  key=lambda row: float(row["speed_vs_reference"]))
+        return (f"{float(row['speed_vs_reference']):.2f}× at {deviation(row)} "
+                f"({schemes[row['integrator']]}, {row['step_ms']} ms)")
+
+    bdf2_1ms = next(row for row in table if row["robot"] == "pneumatic"
+                    and row["integrator"] == "bdf2" and float(row["step_ms"]) == 1)
+    return [
+        (name, "implicit configurations within the sensor noise", source,
+         f"{within} of {len(table)}"),
+        (name, "pneumatic arm, BDF2 at 1 ms", source,
+         f"{float(bdf2_1ms['max_deviation']):.2f} mm, "
+         f"{float(bdf2_1ms['speed_vs_reference']):.2f}× the explicit speed"),
+        (name, "pneumatic arm, fastest implicit step", source, fastest("pneumatic")),
+        (name, "Elastica case 3 with contact, fastest implicit step", source, fastest("case3")),
+        (name, "SMA limb, fastest implicit step", source, fastest("sma")),
+    ]
+
+
+HEADLINE_CHECKS = (headline_safety_filter, headline_pneumatic_adaptation, headline_pneumatic_arm,
+                   headline_learned_dynamics, headline_sma_limb, headline_sma_limb_rl,
+                   headline_implicit_rods)
+
+
+def check_headlines():
+    """The shape of every page's headline table, then its rows read from committed files."""
+    failures = 0
+    tables = {}
+    for name in sorted(os.listdir(RESULTS)):
+        if name.endswith(".md"):
+            tables[name], problems = headline_table(name)
+            for problem in problems:
+                print(f"docs/results/{name}: {problem}")
+            failures += len(problems)
+    checked = 0
+    for check in HEADLINE_CHECKS:
+        for name, label, source, expected in check():
+            row = tables.get(name, {}).get(label)
+            checked += 1
+            if row is None:
+                print(f"docs/results/{name}: no headline row {label!r}")
+            elif f"`{source}`" not in row[4]:
+                print(f"docs/results/{name}: headline row {label!r} does not cite `{source}`")
+            elif expected not in row[2]:
+                print(f"docs/results/{name}: headline row {label!r} stale against {source}; "
+                      f"expected its tendril cell to hold\n  {expected}\n  it is\n  {row[2]}")
+            else:
+                continue
+            failures += 1
+    return failures, len(tables), checked
+
+
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
           learned_dynamics_baselines, pneumatic_open_loop_spread)
 
@@ -116,9 +456,12 @@ def main():
         for line in missing:
             print(f"docs/results/{name}: stale against {source}; expected the text\n  {line}")
         failures += len(missing)
+    headline_failures, pages, rows_checked = check_headlines()
+    failures += headline_failures
     if failures:
-        sys.exit(f"{failures} quoted numbers differ from their files")
-    print(f"{len(CHECKS)} checks: every quoted number matches its file")
+        sys.exit(f"{failures} quoted numbers or headline rows differ from their files")
+    print(f"{len(CHECKS)} checks and the headline tables of {pages} pages ({rows_checked} rows "
+          "read back from their files): every quoted number matches its file")
 
 
 if __name__ == "__main__":
