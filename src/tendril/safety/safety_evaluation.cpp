@@ -6,6 +6,7 @@
 
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/runner/policy_runner.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/safety/constrained_experiment.hpp"
@@ -14,42 +15,80 @@
 
 namespace tendril::safety {
 
+namespace {
+
+// A task actor as a policy the runner can run: it draws from its own stream (the actor's), not
+// the runner's, so an evaluation's actions do not depend on what else drew before it.
+class ActorPolicy final : public Policy {
+ public:
+  ActorPolicy(const TaskActor& actor, const Env& env) : actor_(actor), env_(env) {}
+  const Space& observation_space() const override { return env_.observation_space(); }
+  const Space& action_space() const override { return env_.action_space(); }
+  Action act(const Observation& observation, bool /*deterministic*/, Rng& /*rng*/) const override {
+    return actor_(observation);
+  }
+
+ private:
+  const TaskActor& actor_;
+  const Env& env_;
+};
+
+// Whether each episode left the safe set (its first observation included), and the rows of the
+// trajectory when asked for.
+class SafetyObserver final : public envs::RunObserver {
+ public:
+  SafetyObserver(const Constraint& constraint, std::vector<std::vector<double>>* trajectory)
+      : constraint_(constraint), trajectory_(trajectory) {}
+
+  void on_episode_start(int64_t /*episode*/, uint64_t /*seed*/, const Observation& observation,
+                        const Env& /*env*/) override {
+    violated_ = constraint_.unsafe(observation);
+  }
+  void on_step(const envs::StepView& step) override {
+    const bool unsafe = constraint_.unsafe(step.result.observation);
+    if (trajectory_ != nullptr) {
+      std::vector<double> row{static_cast<double>(step.episode), static_cast<double>(step.step)};
+      row.insert(row.end(), step.observation.data(),
+                 step.observation.data() + step.observation.size());
+      row.insert(row.end(), step.action.data(), step.action.data() + step.action.size());
+      row.push_back(unsafe ? 1.0 : 0.0);
+      trajectory_->push_back(std::move(row));
+    }
+    violated_ = violated_ || unsafe;
+  }
+  void on_episode_end(const envs::EpisodeOutcome& /*outcome*/) override {
+    if (!violated_) ++safe_;
+  }
+  int safe() const { return safe_; }
+
+ private:
+  const Constraint& constraint_;
+  std::vector<std::vector<double>>* trajectory_;
+  bool violated_ = false;
+  int safe_ = 0;
+};
+
+}  // namespace
+
 SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
                                  int episodes, uint64_t seed,
                                  std::vector<std::vector<double>>* trajectory) {
   require(episodes >= 1, "at least one episode", "evaluate_safety");
-  std::vector<double> returns;
-  int safe = 0;
-  for (int i = 0; i < episodes; ++i) {
-    Observation observation = env.reset(seed + static_cast<uint64_t>(i));
-    bool violated = constraint.unsafe(observation);
-    double total = 0.0;
-    for (int64_t t = 0;; ++t) {
-      const Action action = actor(observation);
-      const Step step = env.step(action);
-      if (trajectory != nullptr) {
-        std::vector<double> row{static_cast<double>(i), static_cast<double>(t)};
-        row.insert(row.end(), observation.data(), observation.data() + observation.size());
-        row.insert(row.end(), action.data(), action.data() + action.size());
-        row.push_back(constraint.unsafe(step.observation) ? 1.0 : 0.0);
-        trajectory->push_back(std::move(row));
-      }
-      total += step.reward;
-      observation = step.observation;
-      violated = violated || constraint.unsafe(observation);
-      if (step.terminated || step.truncated) break;
-    }
-    returns.push_back(total);
-    if (!violated) ++safe;
-  }
+  SafetyObserver observer(constraint, trajectory);
+  envs::RunSettings settings;
+  settings.episodes = episodes;
+  settings.seed = seed;
+  const envs::RunResult run = envs::run_policy(ActorPolicy(actor, env), env, settings, {&observer});
   SafetyEvaluation result;
   result.episodes = episodes;
-  for (double r : returns) result.mean_return += r / episodes;
-  for (double r : returns) {
-    result.std_return += (r - result.mean_return) * (r - result.mean_return) / episodes;
+  for (const envs::EpisodeOutcome& e : run.episodes)
+    result.mean_return += e.episode_return / episodes;
+  for (const envs::EpisodeOutcome& e : run.episodes) {
+    const double deviation = e.episode_return - result.mean_return;
+    result.std_return += deviation * deviation / episodes;
   }
   result.std_return = std::sqrt(result.std_return);
-  result.safety_rate = static_cast<double>(safe) / episodes;
+  result.safety_rate = static_cast<double>(observer.safe()) / episodes;
   return result;
 }
 
