@@ -20,10 +20,10 @@
 #include "tendril/core/error.hpp"
 #include "tendril/data/prepare.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/sma_limb/policy_tracking_controller.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
 #include "tendril/envs/wrappers/wrapper.hpp"
 #ifdef TENDRIL_WITH_RL
-#include "policy_controller.hpp"
 #include "run_policy.hpp"
 #endif
 
@@ -101,7 +101,8 @@ int track_command(const Arguments& line) {
         envs::sma_limb::LearnedReachOptions::from_config(run.experiment.env.params);
     const bool deterministic = !line.has("stochastic");
     make_controller = [policy = run.policy, options, deterministic, seed] {
-      return std::make_unique<PolicyController>(policy, options, deterministic, seed);
+      return std::make_unique<envs::sma_limb::PolicyTrackingController>(policy, options,
+                                                                        deterministic, seed);
     };
     controller_name = "the policy of " + run.source.string() +
                       (deterministic ? " (mean actions)" : " (sampled actions)");

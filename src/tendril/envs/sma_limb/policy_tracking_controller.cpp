@@ -1,15 +1,15 @@
-#include "policy_controller.hpp"
+#include "tendril/envs/sma_limb/policy_tracking_controller.hpp"
 
 #include <cmath>
 #include <string>
 
 #include "tendril/core/error.hpp"
 
-namespace tendril::apps {
+namespace tendril::envs::sma_limb {
 
-PolicyController::PolicyController(std::shared_ptr<const rl::Policy> policy,
-                                   const envs::sma_limb::LearnedReachOptions& options,
-                                   bool deterministic, uint64_t seed)
+PolicyTrackingController::PolicyTrackingController(std::shared_ptr<const Policy> policy,
+                                                   const LearnedReachOptions& options,
+                                                   bool deterministic, uint64_t seed)
     : policy_(std::move(policy)),
       observer_(options),
       deterministic_(deterministic),
@@ -25,15 +25,16 @@ PolicyController::PolicyController(std::shared_ptr<const rl::Policy> policy,
           "tendril track --policy");
 }
 
-void PolicyController::reset() {
+void PolicyTrackingController::reset() {
   started_ = false;
   rng_ = Rng(seed_);
 }
 
-Eigen::Vector2d PolicyController::throttles(const control::LimbState& state,
-                                            const Eigen::Vector2d& goal, double) {
+Eigen::Vector2d PolicyTrackingController::throttles(const control::LimbState& state,
+                                                    const Eigen::Vector2d& goal, double) {
   Eigen::Vector4d x;
   x << state.angles, state.rates;
+  const bool first = !started_;
   if (started_) {
     observer_.reached(x);
   } else {
@@ -41,14 +42,13 @@ Eigen::Vector2d PolicyController::throttles(const control::LimbState& state,
     started_ = true;
   }
   observer_.observe(Eigen::Vector4d(goal.x(), goal.y(), 0.0, 0.0), observation_);
+  // A policy with memory within an episode (a safety filter around the trained one) starts one.
+  if (first) policy_->begin_episode(observation_);
   const Action action = policy_->act(observation_, deterministic_, rng_);
-  const Eigen::Vector2d throttles = action.cast<double>()
-                                        .array()
-                                        .round()
-                                        .cwiseMax(-envs::sma_limb::kMaxThrottle)
-                                        .cwiseMin(envs::sma_limb::kMaxThrottle);
+  const Eigen::Vector2d throttles =
+      action.cast<double>().array().round().cwiseMax(-kMaxThrottle).cwiseMin(kMaxThrottle);
   observer_.apply(throttles);
   return throttles;
 }
 
-}  // namespace tendril::apps
+}  // namespace tendril::envs::sma_limb
