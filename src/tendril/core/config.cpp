@@ -3,6 +3,7 @@
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -447,6 +448,27 @@ std::string Config::dump_resolved() const {
 
 namespace {
 
+// A scalar that reads fully as a decimal number, to 15 significant digits: yaml-cpp writes the
+// 17 of a double (0.14999999999999999 for 0.15, 29.999999999999996 for a default converted from
+// radians), more than any parameter means. Other scalars unchanged.
+YAML::Node shortest_numbers(const YAML::Node& node) {
+  if (node.IsSequence()) {
+    YAML::Node copy(YAML::NodeType::Sequence);
+    for (const auto& item : node) copy.push_back(shortest_numbers(item));
+    return copy;
+  }
+  if (!node.IsScalar()) return node;
+  const std::string& text = node.Scalar();
+  if (text.find_first_of(".eE") == std::string::npos) return node;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return node;
+  char buffer[32];
+  const auto written =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 15);
+  return YAML::Node(std::string(buffer, written.ptr));
+}
+
 void flatten(const YAML::Node& node, const std::string& path,
              std::vector<std::pair<std::string, std::string>>& entries) {
   if (node.IsMap()) {
@@ -458,7 +480,7 @@ void flatten(const YAML::Node& node, const std::string& path,
   YAML::Emitter out;
   out.SetSeqFormat(YAML::Flow);
   out.SetMapFormat(YAML::Flow);
-  out << node;
+  out << shortest_numbers(node);
   entries.emplace_back(path, out.c_str());
 }
 

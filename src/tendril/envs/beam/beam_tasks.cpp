@@ -194,7 +194,7 @@ std::vector<EnvDescription::Parameter> common_parameters() {
       {"nan_penalty", "1", "reward of a step whose state became non-finite"},
       {"integrator", "", "the lattice's: bdf2 (default), backward_euler or symplectic_euler", true},
       {"time_step", "s", "lattice time step"},
-      {"newton_iterations", "1", "per implicit step"},
+      {"newton_iterations", "", "per implicit step"},
       {"mass_damping", "1/s", "Rayleigh α"},
       {"stiffness_damping", "s", "Rayleigh β"}};
 }
@@ -214,11 +214,13 @@ EnvDescription beam_description(BeamObservation observation, std::string reward,
   };
 }
 
-std::vector<EnvDescription::Parameter> arc_parameters() {
+// `angular_velocity`: the task's default range, as text.
+std::vector<EnvDescription::Parameter> arc_parameters(const std::string& angular_velocity) {
   return {{"arc_angle", "°", "angle of each arc"},
           {"mean_reversal_interval", "s", "mean time between reversals of direction"},
-          {"radius", "m", "[low, high] of the arcs' radius", true},
-          {"angular_velocity", "rad/s", "[low, high] of the target's angular velocity", true},
+          {"radius", "m", "[low, high] of the arcs' radius; default [0.2, 0.6]", true},
+          {"angular_velocity", "rad/s",
+           "[low, high] of the target's angular velocity; default " + angular_velocity, true},
           {"levels", "", "[{radius, angular_velocity}, ...]: curriculum levels", true}};
 }
 
@@ -227,29 +229,29 @@ std::vector<EnvDescription::Parameter> arc_parameters() {
 EnvDescription arc_follow_description() {
   return beam_description(BeamObservation::kTip,
                           "−20 r_d, r_d = ‖tip − target‖ (seed 003 §IV, Model 1)",
-                          arc_parameters());
+                          arc_parameters("[0.5, 0.5]"));
 }
 
 EnvDescription trajectory_follow_description() {
   return beam_description(BeamObservation::kTrajectory,
                           "−40 r_d − 10 r_v, r_v = ‖v_tip − v_target‖ (seed 003 §V, case 2)",
-                          arc_parameters());
+                          arc_parameters("[0.1, 0.5]"));
 }
 
 EnvDescription energy_aware_follow_description() {
   return beam_description(BeamObservation::kTrajectory,
                           "−40 r_d − 10 r_v − r_E, r_E = |Σ τ_i θ_i| the rows' torque work "
                           "(seed 003 §VI)",
-                          arc_parameters());
+                          arc_parameters("[0.1, 0.5]"));
 }
 
 EnvDescription ellipse_follow_description() {
   return beam_description(
       BeamObservation::kTrajectory, "−40 r_d − 10 r_v (seed 003 §VII)",
       {{"top", "m", "height of the ellipse's top"},
-       {"semi_major_axis", "m", "[low, high] of the last level", true},
-       {"eccentricity", "1", "[low, high] of the last level", true},
-       {"angular_velocity", "rad/s", "[low, high] of the last level", true},
+       {"semi_major_axis", "m", "[low, high] of the last level; default [0.18, 0.25]", true},
+       {"eccentricity", "1", "[low, high] of the last level; default [0.5, 0.8]", true},
+       {"angular_velocity", "rad/s", "[low, high] of the last level; default [0.5, 1.0]", true},
        {"levels", "", "[{semi_major_axis, eccentricity, angular_velocity}, ...]", true}});
 }
 

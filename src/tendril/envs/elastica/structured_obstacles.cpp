@@ -111,7 +111,7 @@ EnvDescription StructuredObstacles::description() {
           "reach_reward); penalty mode: − penalty_weight × the fraction of elements inside an "
           "obstacle; −100 on a non-finite state",
       .episode_end = "terminated on a non-finite rod state; truncated by the time limit (5 s)",
-      .parameters = {{"control_points", "1", "normal control points (the action's size)"},
+      .parameters = {{"control_points", "", "normal control points (the action's size)"},
                      {"control_point_positions", "1",
                       "fractions of L, one per control point; "
                       "[] is equidistant"},

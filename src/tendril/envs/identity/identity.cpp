@@ -70,7 +70,7 @@ EnvDescription Identity::description() {
           "1 when the action equals the state of the step, else 0 (Stable-Baselines3's "
           "IdentityEnv)",
       .episode_end = "never terminates; truncated by the time limit",
-      .parameters = {{"n", "1", "number of states and actions (sets both spaces' sizes)"}},
+      .parameters = {{"n", "", "number of states and actions (sets both spaces' sizes)"}},
   };
 }
 

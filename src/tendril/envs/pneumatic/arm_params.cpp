@@ -134,8 +134,8 @@ std::vector<EnvDescription::Parameter> arm_parameters(const std::string& prefix)
       {"instance_seed", "", "the manufactured robot: draws the chambers' imbalance"},
       {"stochastic", "", "default of every effect's `enabled`"},
       {"drift.enabled", "", "slow drift of the rest pose"},
-      {"drift.step_mm", "mm", "drift per trial"},
-      {"drift.cap_mm", "mm", "largest drift"},
+      {"drift.step_mm", "mm", "standard deviation of the rest pose's drift per trial and axis"},
+      {"drift.cap_mm", "mm", "the drift is scaled back beyond this"},
       {"hysteresis.enabled", "", "pressure hysteresis of the regulators"},
       {"hysteresis.width_bar", "bar", "hysteresis band"},
       {"imbalance.enabled", "", "chamber-to-chamber differences"},
@@ -147,7 +147,7 @@ std::vector<EnvDescription::Parameter> arm_parameters(const std::string& prefix)
       {"elasticity.sigma", "1", "σ of that factor, < 0.5"},
       {"sensor_latency_s", "s", "age of the sample a step returns (multiples of 10 ms)"},
       {"magnitude_scale", "1", "multiplies every magnitude above (the calibration knob)"},
-      {"twin.elements_per_module", "1", "rod elements per module"},
+      {"twin.elements_per_module", "", "rod elements per module"},
       {"twin.time_step_s", "s", "physics time step"},
       {"twin.integrator", "",
        "the rods' integrator (physics::parse_integrator); default the "
@@ -158,7 +158,7 @@ std::vector<EnvDescription::Parameter> arm_parameters(const std::string& prefix)
       {"twin.inflate_time_s", "s", "regulators' inflation time constant"},
       {"twin.deflate_time_s", "s", "regulators' deflation time constant"},
       {"twin.ceiling_bar", "bar", "safety ceiling of every chamber's pressure"},
-      {"twin.settle_time_s", "s", "settling before a trial"}};
+      {"twin.settle_time_s", "s", "settling at zero pressure before a trial"}};
   for (EnvDescription::Parameter& parameter : parameters) parameter.key = prefix + parameter.key;
   return parameters;
 }

@@ -165,7 +165,7 @@ EnvDescription DoubleIntegrator::description() {
                      {"goal_position", "m", "the task's target x"},
                      {"dt", "s", "time per step"},
                      {"horizon", "steps", "T: truncation, and the observation's time scale"},
-                     {"discrete_actions", "1", "0: a Box action; n ≥ 2: Discrete(n)"},
+                     {"discrete_actions", "", "0: a Box action; n ≥ 2: Discrete(n)"},
                      {"start_position", "m", "starts uniform in ±start_position"},
                      {"start_velocity", "m/s", "starts uniform in ±start_velocity"},
                      {"unsafe_penalty", "1", "subtracted from the reward of unsafe steps"}},
