@@ -30,7 +30,7 @@ std::string joined(const std::vector<std::string>& problems) {
 // reads with a default (Config records the defaults a factory used, so this cannot drift).
 TEST(EnvDescription, EveryRegisteredEnvironmentDescribesItsSpacesRewardAndParameters) {
   const Registry& registry = builtin_registry();
-  ASSERT_EQ(registry.ids().size(), 22u);
+  ASSERT_GE(registry.ids().size(), 22u);  // the 22 of this writing, and any added since
   for (const std::string& id : registry.ids()) {
     const std::vector<std::string> problems = description_mismatches(registry, id);
     EXPECT_TRUE(problems.empty()) << id << ":" << joined(problems);

@@ -77,9 +77,9 @@ class ReachEnv : public Env {
   //                        opened through install_dynamics_model_loader; without it
   //                        LinearArmModel, a torch-free stand-in (not the arm)
   //   rest_mm: [9]         the tips with every chamber vented, where episodes start; else
-  //   rest_from: FILE      the first row of a pneumatic data set (tendril data collect) (the arm at
-  //   rest
-  //                        before the signal's first command); else the stand-in's rest
+  //   rest_from: FILE      the first row of a pneumatic data set (tendril data collect) (the
+  //                        arm at rest before the signal's first command); else the stand-in's
+  //                        rest
   static std::unique_ptr<Env> create_on_model(const Config& params);
   // The two environments in words, for `tendril list envs --describe` (env_description.hpp).
   static EnvDescription robot_description();
