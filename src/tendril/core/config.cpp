@@ -451,10 +451,10 @@ namespace {
 // A scalar that reads fully as a decimal number, to 15 significant digits: yaml-cpp writes the
 // 17 of a double (0.14999999999999999 for 0.15, 29.999999999999996 for a default converted from
 // radians), more than any parameter means. Other scalars unchanged.
-YAML::Node shortest_numbers(const YAML::Node& node) {
+YAML::Node readable_numbers(const YAML::Node& node) {
   if (node.IsSequence()) {
     YAML::Node copy(YAML::NodeType::Sequence);
-    for (const auto& item : node) copy.push_back(shortest_numbers(item));
+    for (const auto& item : node) copy.push_back(readable_numbers(item));
     return copy;
   }
   if (!node.IsScalar()) return node;
@@ -480,7 +480,7 @@ void flatten(const YAML::Node& node, const std::string& path,
   YAML::Emitter out;
   out.SetSeqFormat(YAML::Flow);
   out.SetMapFormat(YAML::Flow);
-  out << shortest_numbers(node);
+  out << readable_numbers(node);
   entries.emplace_back(path, out.c_str());
 }
 
