@@ -557,9 +557,13 @@ std::vector<CommandSpec> command_table() {
       .max_positionals = -1,
       .summary = "The registered environment ids, their time limits and what they are.",
       .description = "With --describe, each environment as its default parameters make it: "
-                     "observation and action spaces and the info values a step reports (or the "
-                     "parameters it needs). docs/envs.md is --markdown's output.",
-      .options = {{"describe", "", "Spaces and info values of each environment."},
+                     "observation and action spaces with the meaning and unit of every entry, "
+                     "how it rewards and when its episodes end, the info values a step reports, "
+                     "and the parameters it reads with their defaults (or the parameters it "
+                     "needs). docs/envs.md is --markdown's output.",
+      .options = {{"describe", "",
+                   "Spaces with their entries and units, reward, episode end, info values and "
+                   "parameters of each environment."},
                   {"markdown", "", "The reference page docs/envs.md."}},
       .examples = {"tendril list envs --describe Elastica/Tracking3D-v0"},
       .run = list_envs_command,

@@ -28,16 +28,20 @@ std::string limit_text(const envs::EnvSpec& spec) {
 // reports (one step from reset(0) with a sampled action); or why it needs parameters.
 struct Description {
   std::string observation, action, info, needs;
-  std::string made_with;  // the parameters it cannot default, when it has such
+  std::string made_with;       // the parameters it cannot default, when it has such
+  envs::EnvDescription words;  // its own description (empty when it has none)
+  std::vector<std::pair<std::string, std::string>> read;  // parameters its factory read
 };
 
 Description describe(const envs::Registry& registry, const std::string& id) {
   Description d;
   try {
     const std::string& example = registry.spec(id).example_params;
-    const std::unique_ptr<Env> env =
-        registry.make(id, example.empty() ? Config() : Config::parse(example));
+    const Config params = example.empty() ? Config() : Config::parse(example);
+    const std::unique_ptr<Env> env = registry.make(id, params);
     if (!example.empty()) d.made_with = example;
+    d.read = params.resolved_entries();
+    if (registry.spec(id).description) d.words = registry.spec(id).description();
     d.observation = env->observation_space().describe();
     d.action = env->action_space().describe();
     env->reset(0);
@@ -64,7 +68,85 @@ std::vector<std::pair<std::string, std::string>> description_rows(const envs::En
   rows.emplace_back("observation", d.observation);
   rows.emplace_back("action", d.action);
   rows.emplace_back("info", d.info.empty() ? "none" : d.info);
+  if (!d.words.reward.empty()) rows.emplace_back("reward", d.words.reward);
+  if (!d.words.episode_end.empty()) rows.emplace_back("episode end", d.words.episode_end);
   return rows;
+}
+
+// "[3]" or "[3..35]": the vector indices of each run of entries.
+std::vector<std::string> index_ranges(const std::vector<envs::EnvDescription::Entries>& entries) {
+  std::vector<std::string> ranges;
+  int first = 0;
+  for (const auto& run : entries) {
+    const int last = first + run.count - 1;
+    ranges.push_back("[" + std::to_string(first) +
+                     (run.count > 1 ? ".." + std::to_string(last) : std::string()) + "]");
+    first = last + 1;
+  }
+  return ranges;
+}
+
+// `text` for a Markdown table cell.
+std::string cell(const std::string& text) {
+  std::string escaped;
+  for (const char c : text) {
+    if (c == '|') escaped += '\\';
+    escaped += c;
+  }
+  return escaped;
+}
+
+// The value `p` was read with (given or its default); "—" for an optional key not given.
+std::string parameter_value(const Description& d, const envs::EnvDescription::Parameter& p,
+                            bool markdown) {
+  for (const auto& [key, value] : d.read) {
+    if (key == p.key) return markdown ? "`" + cell(value) + "`" : value;
+  }
+  return p.optional ? "—" : "";
+}
+
+void print_markdown_details(const Description& d) {
+  const envs::EnvDescription& words = d.words;
+  for (const auto& [title, entries] :
+       {std::pair{"Observation", &words.observation}, std::pair{"Action", &words.action}}) {
+    if (entries->empty()) continue;
+    std::printf("\n%s:\n\n| entries | meaning | unit |\n|---|---|---|\n", title);
+    const std::vector<std::string> ranges = index_ranges(*entries);
+    for (std::size_t i = 0; i < entries->size(); ++i) {
+      std::printf("| %s | %s | %s |\n", ranges[i].c_str(), cell((*entries)[i].name).c_str(),
+                  cell((*entries)[i].unit).c_str());
+    }
+  }
+  if (words.parameters.empty()) return;
+  std::printf(
+      "\nParameters (`env.params`):\n\n| key | default | unit | meaning |\n|---|---|---|---|\n");
+  for (const auto& p : words.parameters) {
+    std::printf("| `%s` | %s | %s | %s |\n", p.key.c_str(), parameter_value(d, p, true).c_str(),
+                cell(p.unit).c_str(), cell(p.meaning).c_str());
+  }
+}
+
+void print_text_details(const Description& d) {
+  const envs::EnvDescription& words = d.words;
+  for (const auto& [title, entries] : {std::pair{"observation entries", &words.observation},
+                                       std::pair{"action entries", &words.action}}) {
+    if (entries->empty()) continue;
+    std::printf("  %s\n", title);
+    const std::vector<std::string> ranges = index_ranges(*entries);
+    for (std::size_t i = 0; i < entries->size(); ++i) {
+      std::printf("    %-10s %s (%s)\n", ranges[i].c_str(), (*entries)[i].name.c_str(),
+                  (*entries)[i].unit.c_str());
+    }
+  }
+  if (words.parameters.empty()) return;
+  std::printf("  parameters\n");
+  for (const auto& p : words.parameters) {
+    const std::string value = parameter_value(d, p, false);
+    // Dimensionless values go bare ("goal_bonus: 1", not "1 1").
+    const bool unit = !p.unit.empty() && p.unit != "1" && value != "—";
+    std::printf("    %s: %s%s  %s\n", p.key.c_str(), value.c_str(),
+                unit ? (" " + p.unit).c_str() : "", p.meaning.c_str());
+  }
 }
 
 }  // namespace
@@ -80,7 +162,11 @@ int list_envs_command(const Arguments& line) {
         "# Environments\n\nGenerated from the registry (`tendril list envs --markdown`): each id "
         "as its default parameters make it; `tendril list envs --describe ID` prints the same. "
         "Spaces are written Box(size, [low, high]) or Discrete(n); the info values are those a "
-        "step reports (`tendril run` averages them per step and at episodes' ends).\n");
+        "step reports (`tendril run` averages them per step and at episodes' ends). Entries are "
+        "numbered from 0, and unit 1 means dimensionless. A parameter's default is the value its "
+        "environment read when made as listed; — marks a key read only when given, whose meaning "
+        "says what applies without it. Every environment also takes `max_episode_steps` (over its "
+        "time limit) and, when its task has levels, `curriculum`.\n");
     for (const std::string& id : ids) {
       const envs::EnvSpec& spec = registry.spec(id);
       const Description d = describe(registry, id);
@@ -88,8 +174,10 @@ int list_envs_command(const Arguments& line) {
       for (const auto& [label, value] : description_rows(spec, d)) {
         // Parameters and spaces as code; the time limit, info names and reasons as text.
         const bool code = label == "made with" || label == "observation" || label == "action";
-        std::printf(code ? "| %s | `%s` |\n" : "| %s | %s |\n", label.c_str(), value.c_str());
+        std::printf(code ? "| %s | `%s` |\n" : "| %s | %s |\n", label.c_str(),
+                    (code ? value : cell(value)).c_str());
       }
+      if (d.needs.empty()) print_markdown_details(d);
     }
     return 0;
   }
@@ -104,6 +192,7 @@ int list_envs_command(const Arguments& line) {
     for (const auto& [label, value] : description_rows(spec, d)) {
       std::printf("  %-12s %s\n", label.c_str(), value.c_str());
     }
+    if (d.needs.empty()) print_text_details(d);
   }
   return 0;
 }

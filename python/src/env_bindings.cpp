@@ -4,11 +4,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "bindings.hpp"
 #include "conversions.hpp"
 #include "object_lock.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/render/scene_rasterizer.hpp"
 
@@ -142,6 +144,49 @@ class PyEnv {
   ObjectLock lock_;  // one call at a time from Python threads (object_lock.hpp)
 };
 
+py::list entries_to_list(const std::vector<envs::EnvDescription::Entries>& entries) {
+  py::list list;
+  for (const auto& run : entries) {
+    py::dict entry;
+    entry["name"] = run.name;
+    entry["unit"] = run.unit;
+    entry["count"] = run.count;
+    list.append(entry);
+  }
+  return list;
+}
+
+py::dict describe_env(const std::string& id) {
+  const envs::Registry& registry = envs::builtin_registry();
+  const envs::EnvSpec& spec = registry.spec(id);
+  py::dict out;
+  out["id"] = spec.id;
+  out["summary"] = spec.summary;
+  out["max_episode_steps"] = spec.max_episode_steps;
+  if (!spec.description) return out;
+  const envs::EnvDescription words = spec.description();
+  const auto read = envs::parameters_read(registry, id);
+  out["observation"] = entries_to_list(words.observation);
+  out["action"] = entries_to_list(words.action);
+  out["reward"] = words.reward;
+  out["episode_end"] = words.episode_end;
+  py::list parameters;
+  for (const auto& p : words.parameters) {
+    py::dict parameter;
+    parameter["key"] = p.key;
+    parameter["default"] = py::none();
+    for (const auto& [key, value] : read) {
+      if (key == p.key) parameter["default"] = value;  // YAML text, as the config file writes it
+    }
+    parameter["unit"] = p.unit;
+    parameter["meaning"] = p.meaning;
+    parameter["optional"] = p.optional;
+    parameters.append(parameter);
+  }
+  out["parameters"] = parameters;
+  return out;
+}
+
 }  // namespace
 
 void bind_env(py::module_& m) {
@@ -153,6 +198,10 @@ void bind_env(py::module_& m) {
   m.def(
       "summary", [](const std::string& id) { return envs::builtin_registry().spec(id).summary; },
       "One line describing `id`.");
+  m.def("describe", &describe_env,
+        "`id` in words: its observation and action entries (name, unit, count), reward, "
+        "episode end and parameters (key, the default it read or None, unit, meaning), as "
+        "`tendril list envs --describe` prints them.");
 
   py::class_<PyEnv>(m, "Env", "One registered tendril environment (with its time limit).")
       .def(py::init<const std::string&, const std::string&>(), py::arg("id"),

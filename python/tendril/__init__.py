@@ -10,7 +10,8 @@ their export to C and ONNX) and the trainer.
 """
 from ._tendril import Error, numerics
 from ._version import __version__
-from .env import TendrilEnv, gymnasium_id, make, register_with_gymnasium, registry
+from .env import (TendrilEnv, describe, gymnasium_id, make, register_with_gymnasium,
+                  registry)
 from .policy import Policy, load
 from .training import resume, train
 from .vector import VecEnv, make_vec
@@ -32,7 +33,7 @@ def export_onnx(policy, out, best=False):
     write(policy, out, best)
 
 
-__all__ = ["Error", "Policy", "TendrilEnv", "VecEnv", "__version__", "episode_video",
+__all__ = ["Error", "Policy", "TendrilEnv", "VecEnv", "__version__", "describe", "episode_video",
            "export_c_header", "export_onnx", "gymnasium_id", "load", "make", "make_vec",
            "numerics", "record_video", "registry", "resume", "train"]
 

@@ -150,6 +150,14 @@ def registry():
     return list(_tendril.registered_ids())
 
 
+def describe(env_id):
+    """`env_id` in words, as `tendril list envs --describe` prints it: a dict with summary,
+    max_episode_steps, observation and action (lists of {name, unit, count}, in vector order),
+    reward, episode_end and parameters (lists of {key, default, unit, meaning, optional}; default
+    is the value the environment read, as YAML text, or None for a key read only when given)."""
+    return _tendril.describe(env_id)
+
+
 def gymnasium_id(env_id):
     """The id under which gymnasium.make finds `env_id`: 'tendril/' + id with '/' as '-'
     ('Elastica/Tracking3D-v0' → 'tendril/Elastica-Tracking3D-v0')."""

@@ -101,6 +101,23 @@ TEST(Config, DumpRoundTrips) {
   EXPECT_EQ(again.child("b").get<std::string>("d"), "text");
 }
 
+TEST(Config, ResolvedEntriesListGivenValuesAndTheDefaultsReadsUsed) {
+  const Config config = Config::parse("a: 1\nb:\n  c: [1.5, 2]\n");
+  const Config params = config.child("b");
+  EXPECT_EQ(params.get_or<std::vector<double>>("c", {}), (std::vector<double>{1.5, 2}));
+  EXPECT_EQ(params.get_or<double>("d", 0.25), 0.25);
+  EXPECT_EQ(params.child("e").get_or<bool>("f", true), true);
+  EXPECT_EQ(params.get_or<double>("g", 0.15), 0.15);  // 15 digits: 0.15, not 0.14999999999999999
+  EXPECT_FALSE(params.has("never_read"));             // a test of presence records no default
+  using Entries = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(params.resolved_entries(),
+            (Entries{{"c", "[1.5, 2]"}, {"d", "0.25"}, {"e.f", "true"}, {"g", "0.15"}}));
+  EXPECT_EQ(
+      config.resolved_entries(),
+      (Entries{
+          {"a", "1"}, {"b.c", "[1.5, 2]"}, {"b.d", "0.25"}, {"b.e.f", "true"}, {"b.g", "0.15"}}));
+}
+
 TEST(Config, LoadFileReportsMissingFile) {
   EXPECT_EQ(error_message([] { Config::load_file("/nonexistent/exp.yaml"); }),
             "/nonexistent/exp.yaml: cannot open config file");

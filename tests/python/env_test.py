@@ -230,3 +230,22 @@ def test_an_error_quoting_bytes_that_are_not_utf8_keeps_its_message():
     with pytest.raises(tendril.Error) as raised:
         env.load_state(forged)
     assert "\\xff\\xfe" in str(raised.value), str(raised.value)
+
+
+def test_describe_gives_each_environment_in_words():
+    described = tendril.describe("Pendulum-v1")
+    assert described["max_episode_steps"] == 200
+    assert [(e["name"], e["unit"], e["count"]) for e in described["observation"]] == [
+        ("cos θ (θ = 0 upright)", "1", 1), ("sin θ", "1", 1), ("angular velocity θ̇", "rad/s", 1)]
+    assert [(e["unit"], e["count"]) for e in described["action"]] == [("N·m", 1)]
+    assert described["reward"] and described["episode_end"]
+    assert [(p["key"], p["default"], p["unit"]) for p in described["parameters"]] == [
+        ("g", "10", "m/s²")]
+    for env_id in IDS:
+        described = tendril.describe(env_id)
+        env = tendril.make(env_id, **({"calibration": "none"} if env_id == "SmaLimb/Robot-v0"
+                                      else {}))
+        size = int(np.prod(env.observation_space.shape))
+        assert sum(e["count"] for e in described["observation"]) == size, env_id
+    with pytest.raises(tendril.Error, match="unknown environment id 'Nope-v0'"):
+        tendril.describe("Nope-v0")

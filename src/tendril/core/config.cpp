@@ -3,6 +3,7 @@
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -337,6 +338,30 @@ std::optional<double> Config::get_optional(std::string_view key,
   return get<double>(key);
 }
 
+namespace {
+
+// The document `root` with the defaults a read used filled in, below the view at `path`.
+YAML::Node resolved_view(const YAML::Node& root, const YAML::Node& defaults,
+                         const std::string& path) {
+  YAML::Node resolved = YAML::Clone(root);
+  if (!resolved.IsMap()) resolved = YAML::Node(YAML::NodeType::Map);
+  fill_missing(resolved, defaults);
+  // This view's part of it.
+  YAML::Node view = resolved;
+  if (!path.empty() && path.find('[') == std::string::npos) {
+    std::size_t start = 0;
+    while (view && start <= path.size()) {
+      const std::size_t dot = path.find('.', start);
+      view.reset(view[path.substr(start, dot - start)]);
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+  }
+  return view ? view : YAML::Node(YAML::NodeType::Map);
+}
+
+}  // namespace
+
 std::string Config::where(std::string_view key) const {
   return shared_->source + ": " + key_path(key);
 }
@@ -416,23 +441,56 @@ std::string Config::dump() const {
 }
 
 std::string Config::dump_resolved() const {
-  YAML::Node resolved = YAML::Clone(shared_->root);
-  if (!resolved.IsMap()) resolved = YAML::Node(YAML::NodeType::Map);
-  fill_missing(resolved, shared_->defaults);
-  // This view's part of it.
-  YAML::Node view = resolved;
-  if (!path_.empty() && path_.find('[') == std::string::npos) {
-    std::size_t start = 0;
-    while (view && start <= path_.size()) {
-      const std::size_t dot = path_.find('.', start);
-      view.reset(view[path_.substr(start, dot - start)]);
-      if (dot == std::string::npos) break;
-      start = dot + 1;
+  YAML::Emitter out;
+  out << resolved_view(shared_->root, shared_->defaults, path_);
+  return std::string(out.c_str()) + "\n";
+}
+
+namespace {
+
+// A scalar that reads fully as a decimal number, to 15 significant digits: yaml-cpp writes the
+// 17 of a double (0.14999999999999999 for 0.15, 29.999999999999996 for a default converted from
+// radians), more than any parameter means. Other scalars unchanged.
+YAML::Node readable_numbers(const YAML::Node& node) {
+  if (node.IsSequence()) {
+    YAML::Node copy(YAML::NodeType::Sequence);
+    for (const auto& item : node) copy.push_back(readable_numbers(item));
+    return copy;
+  }
+  if (!node.IsScalar()) return node;
+  const std::string& text = node.Scalar();
+  if (text.find_first_of(".eE") == std::string::npos) return node;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return node;
+  char buffer[32];
+  const auto written =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 15);
+  return YAML::Node(std::string(buffer, written.ptr));
+}
+
+void flatten(const YAML::Node& node, const std::string& path,
+             std::vector<std::pair<std::string, std::string>>& entries) {
+  if (node.IsMap()) {
+    for (const auto& entry : node) {
+      flatten(entry.second, join(path, entry.first.as<std::string>()), entries);
     }
+    return;
   }
   YAML::Emitter out;
-  out << (view ? view : YAML::Node(YAML::NodeType::Map));
-  return std::string(out.c_str()) + "\n";
+  out.SetSeqFormat(YAML::Flow);
+  out.SetMapFormat(YAML::Flow);
+  out << readable_numbers(node);
+  entries.emplace_back(path, out.c_str());
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> Config::resolved_entries() const {
+  std::vector<std::pair<std::string, std::string>> entries;
+  const YAML::Node view = resolved_view(shared_->root, shared_->defaults, path_);
+  if (view.IsMap()) flatten(view, "", entries);
+  return entries;
 }
 
 }  // namespace tendril

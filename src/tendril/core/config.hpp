@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace tendril {
@@ -69,6 +70,10 @@ class Config {
   // what the program ran with, which reads back to the same values whatever the defaults of a
   // later version.
   std::string dump_resolved() const;
+  // dump_resolved's document below this view as (key path relative to the view, value as YAML
+  // flow text) pairs, one per value that is not a mapping ("drift.enabled", "true"), in document
+  // order: the parameters a reader took, with the defaults it used.
+  std::vector<std::pair<std::string, std::string>> resolved_entries() const;
 
  private:
   struct Shared;

@@ -11,6 +11,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs {
 
@@ -28,6 +29,9 @@ struct EnvSpec {
   std::optional<int64_t> max_episode_steps;
   // One line for `tendril list envs`.
   std::string summary;
+  // The environment in words (its class's static description()): entries of its spaces with
+  // units, reward, episode end, parameters; printed by `tendril list envs --describe`.
+  std::function<EnvDescription()> description = nullptr;
   // Optional: N environments of this id as one VecEnv that steps them together (a batched
   // learned model), behaving as N `make(id)` envs with episode statistics in a ThreadedVecEnv;
   // gets the time limit the single env would get.

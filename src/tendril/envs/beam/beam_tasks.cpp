@@ -163,4 +163,96 @@ std::unique_ptr<Env> make_ellipse_follow(const Config& params) {
   return std::make_unique<BeamEnv>(spec, std::make_unique<EllipsePath>(ellipse));
 }
 
+namespace {
+
+// Model 1 (kTip) or Model 3 (kTrajectory) of BeamObservation.
+std::vector<EnvDescription::Entries> beam_observation(BeamObservation observation) {
+  if (observation == BeamObservation::kTip) {
+    return {{"tip x, y (centroid of the last row, lab frame)", "m", 2}, {"target x, y", "m", 2}};
+  }
+  return {{"centres of torque rows 1..5, x then y of each", "m", 10},
+          {"tip x, y", "m", 2},
+          {"tip velocity x, y", "m/s", 2},
+          {"target x, y", "m", 2},
+          {"target velocity x, y", "m/s", 2}};
+}
+
+std::vector<EnvDescription::Parameter> common_parameters() {
+  return {
+      {"torque_scale", "N·m", "torque per unit action"},
+      {"control_period", "s", "one step"},
+      {"observation", "",
+       "tip (Model 1, 4), six_points (Model 2, 14) or trajectory (Model 3, "
+       "18); the task's by default",
+       true},
+      {"distance_weight", "1/m", "w_d"},
+      {"velocity_weight", "s/m", "w_v"},
+      {"energy_weight", "1", "w_E"},
+      {"energy_units", "", "r_E with τ in newton_metres (default) or normalised", true},
+      {"max_distance", "m", "tip–target distance that ends the episode; 0: never"},
+      {"success_distance", "m", "distance that counts as success"},
+      {"nan_penalty", "1", "reward of a step whose state became non-finite"},
+      {"integrator", "", "the lattice's: bdf2 (default), backward_euler or symplectic_euler", true},
+      {"time_step", "s", "lattice time step"},
+      {"newton_iterations", "", "per implicit step"},
+      {"mass_damping", "1/s", "Rayleigh α"},
+      {"stiffness_damping", "s", "Rayleigh β"}};
+}
+
+EnvDescription beam_description(BeamObservation observation, std::string reward,
+                                std::vector<EnvDescription::Parameter> path) {
+  std::vector<EnvDescription::Parameter> parameters = common_parameters();
+  parameters.insert(parameters.end(), path.begin(), path.end());
+  return {
+      .observation = beam_observation(observation),
+      .action = {{"torques of rows 1..5, in [−1, 1] × torque_scale", "1", 5}},
+      .reward = std::move(reward),
+      .episode_end =
+          "terminated on a non-finite state or beyond max_distance (when set); "
+          "truncated by the time limit",
+      .parameters = std::move(parameters),
+  };
+}
+
+// `angular_velocity`: the task's default range, as text.
+std::vector<EnvDescription::Parameter> arc_parameters(const std::string& angular_velocity) {
+  return {{"arc_angle", "°", "angle of each arc"},
+          {"mean_reversal_interval", "s", "mean time between reversals of direction"},
+          {"radius", "m", "[low, high] of the arcs' radius; default [0.2, 0.6]", true},
+          {"angular_velocity", "rad/s",
+           "[low, high] of the target's angular velocity; default " + angular_velocity, true},
+          {"levels", "", "[{radius, angular_velocity}, ...]: curriculum levels", true}};
+}
+
+}  // namespace
+
+EnvDescription arc_follow_description() {
+  return beam_description(BeamObservation::kTip,
+                          "−20 r_d, r_d = ‖tip − target‖ (seed 003 §IV, Model 1)",
+                          arc_parameters("[0.5, 0.5]"));
+}
+
+EnvDescription trajectory_follow_description() {
+  return beam_description(BeamObservation::kTrajectory,
+                          "−40 r_d − 10 r_v, r_v = ‖v_tip − v_target‖ (seed 003 §V, case 2)",
+                          arc_parameters("[0.1, 0.5]"));
+}
+
+EnvDescription energy_aware_follow_description() {
+  return beam_description(BeamObservation::kTrajectory,
+                          "−40 r_d − 10 r_v − r_E, r_E = |Σ τ_i θ_i| the rows' torque work "
+                          "(seed 003 §VI)",
+                          arc_parameters("[0.1, 0.5]"));
+}
+
+EnvDescription ellipse_follow_description() {
+  return beam_description(
+      BeamObservation::kTrajectory, "−40 r_d − 10 r_v (seed 003 §VII)",
+      {{"top", "m", "height of the ellipse's top"},
+       {"semi_major_axis", "m", "[low, high] of the last level; default [0.18, 0.25]", true},
+       {"eccentricity", "1", "[low, high] of the last level; default [0.5, 0.8]", true},
+       {"angular_velocity", "rad/s", "[low, high] of the last level; default [0.5, 1.0]", true},
+       {"levels", "", "[{semi_major_axis, eccentricity, angular_velocity}, ...]", true}});
+}
+
 }  // namespace tendril::envs::beam

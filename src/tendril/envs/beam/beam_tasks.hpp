@@ -4,6 +4,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs::beam {
 
@@ -35,14 +36,18 @@ inline constexpr double kTaskMassDamping = 5.0;  // 1/s, Rayleigh α of the task
 // 0.5 rad/s with random reversals; Model 1 state (tip, 4), reward −20 r_d; ±4.5 N·m.
 // observation: six_points gives Model 2 (14).
 std::unique_ptr<Env> make_arc_follow(const Config& params);
+EnvDescription arc_follow_description();
 // Beam/TrajectoryFollow-v0 — Task 2 (Sec. V): the arcs at ω ∈ [0.1, 0.5] rad/s, Model 3 state
 // (18), reward −40 r_d − 10 r_v (case 2, the seed's best; cases 1 and 3 by the weights).
 std::unique_ptr<Env> make_trajectory_follow(const Config& params);
+EnvDescription trajectory_follow_description();
 // Beam/EnergyAwareFollow-v0 — Task 3 (Sec. VI): Task 2 with −1 · |Σ τ_i θ_i| added.
 std::unique_ptr<Env> make_energy_aware_follow(const Config& params);
+EnvDescription energy_aware_follow_description();
 // Beam/EllipseFollow-v0 — Task 4 (Sec. VII): the ellipse, Model 3 state and case-2 reward,
 // ±8 N·m, three levels from fixed parameters to the seed's ranges.
 std::unique_ptr<Env> make_ellipse_follow(const Config& params);
+EnvDescription ellipse_follow_description();
 
 // Registered time limits: 10 s of 50 ms steps (a 160° arc at 0.5 rad/s takes 5.6 s), and for
 // the ellipse 13 s, one revolution at its slowest ω (2π / 0.5 rad/s = 12.6 s).

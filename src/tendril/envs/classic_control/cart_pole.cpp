@@ -87,4 +87,19 @@ void CartPole::load_state(SnapshotReader& in) {
   terminated_ = terminated;
 }
 
+EnvDescription CartPole::description() {
+  return {
+      .observation = {{"cart position x", "m"},
+                      {"cart velocity ẋ", "m/s"},
+                      {"pole angle θ from upright", "rad"},
+                      {"pole angular velocity θ̇", "rad/s"}},
+      .action = {{"push direction: 0 left, 1 right (±10 N)", "1"}},
+      .reward =
+          "+1 every step, including the one on which the pole falls (Gymnasium's "
+          "CartPole-v1)",
+      .episode_end = "terminated when |x| > 2.4 m or |θ| > 12°; truncated by the time limit",
+      .parameters = {},
+  };
+}
+
 }  // namespace tendril::envs

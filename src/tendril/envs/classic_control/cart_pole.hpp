@@ -8,6 +8,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs {
 
@@ -36,6 +37,8 @@ class CartPole : public Env {
 
   // Registry factory; CartPole-v1 has no parameters.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   CartPole();
 

@@ -72,4 +72,20 @@ void MountainCarContinuous::load_state(SnapshotReader& in) {
   velocity_ = velocity;
 }
 
+EnvDescription MountainCarContinuous::description() {
+  return {
+      .observation = {{"car position x, in [−1.2, 0.6]", "m"},
+                      {"car velocity, in [−0.07, 0.07]", "m/step"}},
+      .action = {{"force, in [−1, 1] (scaled by 0.0015)", "1"}},
+      .reward =
+          "100 on reaching the goal, minus 0.1 a² every step (Gymnasium's "
+          "MountainCarContinuous-v0)",
+      .episode_end =
+          "terminated when x ≥ 0.45 m with velocity ≥ goal_velocity; truncated by the "
+          "time limit",
+      .parameters = {{"goal_velocity", "m/step",
+                      "least velocity at the goal that ends the episode"}},
+  };
+}
+
 }  // namespace tendril::envs

@@ -6,6 +6,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs {
 
@@ -33,6 +34,8 @@ class MountainCarContinuous : public Env {
   };
   // Registry factory; params: {goal_velocity}.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   MountainCarContinuous() : MountainCarContinuous(Params{}) {}
   explicit MountainCarContinuous(Params params);

@@ -83,4 +83,18 @@ void Pendulum::load_state(SnapshotReader& in) {
   theta_dot_ = theta_dot;
 }
 
+EnvDescription Pendulum::description() {
+  return {
+      .observation = {{"cos θ (θ = 0 upright)", "1"},
+                      {"sin θ", "1"},
+                      {"angular velocity θ̇", "rad/s"}},
+      .action = {{"torque at the pivot", "N·m"}},
+      .reward =
+          "−(θ² + 0.1 θ̇² + 0.001 u²), θ normalised to [−π, π), u the clipped torque "
+          "(Gymnasium's Pendulum-v1)",
+      .episode_end = "never terminates; truncated by the time limit",
+      .parameters = {{"g", "m/s²", "gravitational acceleration"}},
+  };
+}
+
 }  // namespace tendril::envs

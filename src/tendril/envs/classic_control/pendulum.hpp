@@ -6,6 +6,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs {
 
@@ -31,6 +32,8 @@ class Pendulum : public Env {
   };
   // Registry factory; params: {g}.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   Pendulum() : Pendulum(Params{}) {}
   explicit Pendulum(Params params);

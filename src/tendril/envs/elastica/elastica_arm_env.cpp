@@ -162,4 +162,20 @@ void ElasticaArmEnv::set_target(const Eigen::Vector3d& position) {
   target_position_ = position;
 }
 
+std::vector<EnvDescription::Entries> arm_state_entries() {
+  const std::string nodes =
+      "of the " + std::to_string(kRodSamples) + " sampled arm nodes, base to tip (lab frame)";
+  return {{"x " + nodes, "m", kRodSamples},
+          {"y " + nodes, "m", kRodSamples},
+          {"z " + nodes, "m", kRodSamples},
+          {"tip speed |v_tip|", "m/s"},
+          {"tip direction of motion v_tip/|v_tip|, x y z (zeros at rest)", "1", 3}};
+}
+
+EnvDescription::Entries control_point_entries(const std::string& direction, int count) {
+  return {direction + " torque control points, base to tip, × α_m = " +
+              std::to_string(static_cast<int>(physics::SplineActuationSpec{}.max_torque)) + " N·m",
+          "1", count};
+}
+
 }  // namespace tendril::envs::elastica

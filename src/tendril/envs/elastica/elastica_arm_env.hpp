@@ -8,9 +8,17 @@
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/elastica/observation_writer.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/physics/arms/elastica_arm.hpp"
 
 namespace tendril::envs::elastica {
+
+// The observation entries every case begins with, the seed's x_a and v_a (rod_nodes, then
+// speed_and_direction of the tip): kRodBlock + kVelocityBlock entries.
+std::vector<EnvDescription::Entries> arm_state_entries();
+// `count` control points of the torque spline in one direction ("normal (d1)"), in [−1, 1],
+// scaled by the actuation's α_m.
+EnvDescription::Entries control_point_entries(const std::string& direction, int count);
 
 // What the four Elastica control cases (seed 000; SPEC M2) share: the soft arm, an RL step of
 // `substeps_per_action` physics steps under muscle targets held fixed (the seed: "The selected

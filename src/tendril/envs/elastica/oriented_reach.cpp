@@ -89,4 +89,25 @@ void OrientedReach::load_task_state(SnapshotReader& in) {
   target_angle_ = angle;
 }
 
+EnvDescription OrientedReach::description() {
+  std::vector<EnvDescription::Entries> observation = arm_state_entries();
+  observation.insert(observation.end(),
+                     {{"tip quaternion w x y z, material → lab", "1", 4},
+                      {"target position x y z", "m", 3},
+                      {"target speed (always 0)", "m/s"},
+                      {"target direction of motion, x y z (zeros: the target is still)", "1", 3},
+                      {"target quaternion w x y z", "1", 4}});
+  return {
+      .observation = std::move(observation),
+      .action = {control_point_entries("normal (d1)", 6), control_point_entries("binormal (d2)", 6),
+                 control_point_entries("twist (d3)", 6)},
+      .reward =
+          "−d² − 0.5 p² plus the seed's bonus tiers in d and p (up to 6 − 2p at d ≤ 5 cm, "
+          "p ≤ 0.05), p = 1 − (q_tip · q_target)² (seed 000 case 2, "
+          "oriented_reach_reward); −10000 on a non-finite state",
+      .episode_end = "terminated on a non-finite rod state; truncated by the time limit (2 s)",
+      .parameters = {},
+  };
+}
+
 }  // namespace tendril::envs::elastica

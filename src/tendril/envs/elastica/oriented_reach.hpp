@@ -5,6 +5,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/envs/elastica/elastica_arm_env.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs::elastica {
 
@@ -43,6 +44,8 @@ class OrientedReach : public ElasticaArmEnv {
 
   // Registry factory; no parameters.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   OrientedReach();
 

@@ -97,4 +97,28 @@ double StructuredObstacles::task_reward(double distance, Info& info) const {
   return reward;
 }
 
+EnvDescription StructuredObstacles::description() {
+  std::vector<EnvDescription::Entries> observation = arm_state_entries();
+  observation.insert(observation.end(),
+                     {{"target position x y z", "m", 3},
+                      {"obstacles 0..7: 5 points along each axis, x of the 5, then y, then z", "m",
+                       kObstacles * kObstacleBlock}});
+  return {
+      .observation = std::move(observation),
+      .action = {control_point_entries("normal (d1)", Params{}.control_points)},
+      .reward =
+          "−d² + 0.5 if d ≤ 0.1 m, + 1.5 more if d ≤ 0.05 m, d the tip–target distance (seed 000, "
+          "reach_reward); penalty mode: − penalty_weight × the fraction of elements inside an "
+          "obstacle; −100 on a non-finite state",
+      .episode_end = "terminated on a non-finite rod state; truncated by the time limit (5 s)",
+      .parameters = {{"control_points", "", "normal control points (the action's size)"},
+                     {"control_point_positions", "1",
+                      "fractions of L, one per control point; "
+                      "[] is equidistant"},
+                     {"obstacle_mode", "", "contact (soft walls) or penalty (no contact)"},
+                     {"penalty_weight", "1", "φ of the penalty mode"},
+                     {"integrator", "", "verlet (the paper's), backward_euler or bdf2"}},
+  };
+}
+
 }  // namespace tendril::envs::elastica

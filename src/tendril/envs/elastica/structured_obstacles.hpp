@@ -5,6 +5,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/envs/elastica/elastica_arm_env.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs::elastica {
 
@@ -60,6 +61,8 @@ class StructuredObstacles : public ElasticaArmEnv {
   // Registry factory; params: control_points, control_point_positions, obstacle_mode,
   // penalty_weight, integrator. Raises Error naming the key of an invalid value.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   StructuredObstacles() : StructuredObstacles(Params{}) {}
   // Raises Error on an invalid parameter.

@@ -79,4 +79,21 @@ void Tracking3D::load_task_state(SnapshotReader& in) {
   motion_.set_state(position, velocity, updates);
 }
 
+EnvDescription Tracking3D::description() {
+  std::vector<EnvDescription::Entries> observation = arm_state_entries();
+  observation.insert(observation.end(), {{"target position x y z", "m", 3},
+                                         {"target speed (0.5 m/s)", "m/s"},
+                                         {"target direction of motion, x y z", "1", 3}});
+  return {
+      .observation = std::move(observation),
+      .action = {control_point_entries("normal (d1)", 6),
+                 control_point_entries("binormal (d2)", 6)},
+      .reward =
+          "−d² + 0.5 if d ≤ 0.1 m, + 1.5 more if d ≤ 0.05 m, d the tip–target distance (seed 000, "
+          "reach_reward); −1000 on a non-finite state",
+      .episode_end = "terminated on a non-finite rod state; truncated by the time limit (10 s)",
+      .parameters = {{"integrator", "", "verlet (the paper's), backward_euler or bdf2"}},
+  };
+}
+
 }  // namespace tendril::envs::elastica

@@ -5,6 +5,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/envs/elastica/elastica_arm_env.hpp"
 #include "tendril/envs/elastica/target_motion.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs::elastica {
 
@@ -35,6 +36,8 @@ class Tracking3D : public ElasticaArmEnv {
   // Registry factory; params: integrator (verlet, the paper's and the default; backward_euler
   // or bdf2: one implicit step per action, docs/results/implicit_rods.md).
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   explicit Tracking3D(physics::RodIntegrator integrator = physics::RodIntegrator::kPositionVerlet);
 

@@ -45,4 +45,24 @@ double UnstructuredObstacles::task_reward(double distance, Info& info) const {
   return reach_reward(distance);
 }
 
+EnvDescription UnstructuredObstacles::description() {
+  std::vector<EnvDescription::Entries> observation = arm_state_entries();
+  observation.insert(observation.end(),
+                     {{"target position x y z", "m", 3},
+                      {"obstacles 0..11: 5 points along each axis, x of the 5, then y, then z", "m",
+                       kObstacles * kObstacleBlock}});
+  return {
+      .observation = std::move(observation),
+      .action = {control_point_entries("normal (d1)", 2),
+                 control_point_entries("binormal (d2)", 2)},
+      .reward =
+          "−d² + 0.5 if d ≤ 0.1 m, + 1.5 more if d ≤ 0.05 m, d the tip–target distance (seed 000, "
+          "reach_reward); −100 on a non-finite state",
+      .episode_end = "terminated on a non-finite rod state; truncated by the time limit (5 s)",
+      .parameters = {{"obstacle_seed", "",
+                      "seed of the nest of cylinders, fixed for the "
+                      "environment's life"}},
+  };
+}
+
 }  // namespace tendril::envs::elastica

@@ -5,6 +5,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/envs/elastica/elastica_arm_env.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs::elastica {
 
@@ -42,6 +43,8 @@ class UnstructuredObstacles : public ElasticaArmEnv {
 
   // Registry factory; params: obstacle_seed.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   explicit UnstructuredObstacles(uint64_t obstacle_seed = 0);
 

@@ -61,4 +61,17 @@ void Identity::load_state(SnapshotReader& in) {
   state_ = state;
 }
 
+EnvDescription Identity::description() {
+  return {
+      .observation = {{"one-hot state: entry i is 1 for state i, 0..n−1", "1",
+                       static_cast<int>(Params{}.n)}},
+      .action = {{"the state index to repeat, 0..n−1", "1"}},
+      .reward =
+          "1 when the action equals the state of the step, else 0 (Stable-Baselines3's "
+          "IdentityEnv)",
+      .episode_end = "never terminates; truncated by the time limit",
+      .parameters = {{"n", "", "number of states and actions (sets both spaces' sizes)"}},
+  };
+}
+
 }  // namespace tendril::envs

@@ -7,6 +7,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs {
 
@@ -25,6 +26,8 @@ class Identity : public Env {
   };
   // Registry factory; params: {n}.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   Identity() : Identity(Params{}) {}
   explicit Identity(Params params);

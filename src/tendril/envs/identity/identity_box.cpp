@@ -49,4 +49,14 @@ void IdentityBox::load_state(SnapshotReader& in) {
   state_ = state;
 }
 
+EnvDescription IdentityBox::description() {
+  return {
+      .observation = {{"state s, uniform in [−1, 1]", "1"}},
+      .action = {{"the value a to match s", "1"}},
+      .reward = "1 when s − eps ≤ a ≤ s + eps, else 0 (Stable-Baselines3's IdentityEnvBox)",
+      .episode_end = "never terminates; truncated by the time limit",
+      .parameters = {{"eps", "1", "half-width of the rewarded interval around the state"}},
+  };
+}
+
 }  // namespace tendril::envs

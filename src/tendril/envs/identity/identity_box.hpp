@@ -6,6 +6,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs {
 
@@ -20,6 +21,8 @@ class IdentityBox : public Env {
   };
   // Registry factory; params: {eps}.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   IdentityBox() : IdentityBox(Params{}) {}
   explicit IdentityBox(Params params);

@@ -126,4 +126,41 @@ PneumaticArmSpec arm_spec_from(const Config& params) {
   return spec;
 }
 
+std::vector<EnvDescription::Parameter> arm_parameters(const std::string& prefix) {
+  std::vector<EnvDescription::Parameter> parameters = {
+      {"scenario", "", "damage scenario S0–S4 (seed 002 §V-A)"},
+      {"damaged_chamber", "", "which chamber of a damaged module (0, 1, 2)"},
+      {"damaged_fraction", "1", "of its command a disrupted chamber still reaches, [0, 1)"},
+      {"instance_seed", "", "the manufactured robot: draws the chambers' imbalance"},
+      {"stochastic", "", "default of every effect's `enabled`"},
+      {"drift.enabled", "", "slow drift of the rest pose"},
+      {"drift.step_mm", "mm", "standard deviation of the rest pose's drift per trial and axis"},
+      {"drift.cap_mm", "mm", "the drift is scaled back beyond this"},
+      {"hysteresis.enabled", "", "pressure hysteresis of the regulators"},
+      {"hysteresis.width_bar", "bar", "hysteresis band"},
+      {"imbalance.enabled", "", "chamber-to-chamber differences"},
+      {"imbalance.gain_spread", "1", "relative spread of the chambers' gains, < 1"},
+      {"imbalance.eccentricity_mm", "mm", "offset of the chambers from the axis"},
+      {"sensor_noise.enabled", "", "motion-capture noise"},
+      {"sensor_noise.marker_sigma_mm", "mm", "standard deviation per coordinate"},
+      {"elasticity.enabled", "", "per-trial factor 1 + σξ on each module's response"},
+      {"elasticity.sigma", "1", "σ of that factor, < 0.5"},
+      {"sensor_latency_s", "s", "age of the sample a step returns (multiples of 10 ms)"},
+      {"magnitude_scale", "1", "multiplies every magnitude above (the calibration knob)"},
+      {"twin.elements_per_module", "", "rod elements per module"},
+      {"twin.time_step_s", "s", "physics time step"},
+      {"twin.integrator", "",
+       "the rods' integrator (physics::parse_integrator); default the "
+       "twin's own",
+       true},
+      {"twin.bend_deg_per_bar", "°/bar", "bend per bar of pressure difference"},
+      {"twin.extension_per_bar", "1/bar", "relative extension per bar"},
+      {"twin.inflate_time_s", "s", "regulators' inflation time constant"},
+      {"twin.deflate_time_s", "s", "regulators' deflation time constant"},
+      {"twin.ceiling_bar", "bar", "safety ceiling of every chamber's pressure"},
+      {"twin.settle_time_s", "s", "settling at zero pressure before a trial"}};
+  for (EnvDescription::Parameter& parameter : parameters) parameter.key = prefix + parameter.key;
+  return parameters;
+}
+
 }  // namespace tendril::envs::pneumatic

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "tendril/core/config.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/physics/twins/pneumatic/pneumatic_arm_spec.hpp"
 
 namespace tendril::envs::pneumatic {
@@ -29,6 +30,9 @@ namespace tendril::envs::pneumatic {
 // Raises tendril::Error naming the key (with its file) for a value of the wrong type or out
 // of range; keys it does not know are left unread for the registry to reject.
 physics::pneumatic::PneumaticArmSpec arm_spec_from(const Config& params);
+
+// The keys arm_spec_from reads, each with `prefix` ("" or "robot.") before it.
+std::vector<EnvDescription::Parameter> arm_parameters(const std::string& prefix);
 
 // "<file>: <path>.<key>", for errors about one key.
 std::string key_where(const Config& config, const std::string& key);

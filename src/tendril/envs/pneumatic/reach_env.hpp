@@ -6,6 +6,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/envs/pneumatic/arm_dynamics.hpp"
 #include "tendril/envs/pneumatic/reach_task.hpp"
 
@@ -76,9 +77,13 @@ class ReachEnv : public Env {
   //                        opened through install_dynamics_model_loader; without it
   //                        LinearArmModel, a torch-free stand-in (not the arm)
   //   rest_mm: [9]         the tips with every chamber vented, where episodes start; else
-  //   rest_from: FILE      the first row of a pneumatic data set (tendril data collect) (the arm at rest
-  //                        before the signal's first command); else the stand-in's rest
+  //   rest_from: FILE      the first row of a pneumatic data set (tendril data collect) (the
+  //                        arm at rest before the signal's first command); else the stand-in's
+  //                        rest
   static std::unique_ptr<Env> create_on_model(const Config& params);
+  // The two environments in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription robot_description();
+  static EnvDescription model_description();
   static constexpr const char* kModelId = "PneumaticArm/LearnedReach-v0";
   static constexpr int64_t kEpisodeSteps = 150;
 

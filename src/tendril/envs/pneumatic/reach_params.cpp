@@ -135,4 +135,73 @@ std::unique_ptr<Env> ReachEnv::create_on_model(const Config& params) {
       std::move(setup), std::make_unique<ModelDynamics>(std::move(model), rest, jitter));
 }
 
+namespace {
+
+// What both reaching environments share; `model` says what stands for the arm.
+EnvDescription reach_description(std::vector<EnvDescription::Parameter> dynamics) {
+  std::vector<EnvDescription::Parameter> parameters = {
+      {"task", "", "the paper's goal and plate: main, G1, G2 or G3"},
+      {"goal_mm", "mm", "goal x y z, over the task's", true},
+      {"obstacle_min_mm", "mm", "plate corner, over the task's", true},
+      {"obstacle_max_mm", "mm", "plate corner, over the task's", true},
+      {"boundary", "", "the boundary box B: paper or relaxed (GPRCA's)"},
+      {"boundary_min_mm", "mm", "B's corner, over the boundary's", true},
+      {"boundary_max_mm", "mm", "B's corner, over the boundary's", true},
+      {"obstacle_distance", "", "O_dist to the plate (box) or to its plane (plane)"},
+      {"success_distance_mm", "mm", "G_dist at which the goal counts as reached"},
+      {"terminate_outside_boundary", "", "leaving B ends the episode"},
+      {"rate_limit_bar", "bar", "largest change of a command taken in one step"},
+      {"observe_command", "", "append the 9 normalised commands (20 entries)"},
+      {"normalization.dataset", "",
+       "data set whose tip ranges normalise the observation; "
+       "default the twin's 10-minute set",
+       true},
+      {"normalization.tip_min_mm", "mm", "9 lower tip bounds, over the data set's", true},
+      {"normalization.tip_max_mm", "mm", "9 upper tip bounds, over the data set's", true},
+      {"normalization.distance_scale_mm", "mm", "G_dist, O_dist enter as 2d/scale − 1"}};
+  parameters.insert(parameters.end(), dynamics.begin(), dynamics.end());
+  return {
+      .observation = {{"tips of modules 1, 2, 3, x y z each, normalised per axis by the data set's "
+                       "range",
+                       "1", physics::pneumatic::kChambers},
+                      {"goal distance G_dist of module 3's tip, 2d/scale − 1", "1"},
+                      {"plate distance O_dist of module 3's tip, 2d/scale − 1", "1"}},
+      .action = {{"change of each chamber's normalised command (a = −1 ↔ 0 bar, 1 ↔ 1.5 bar)", "1",
+                  physics::pneumatic::kChambers}},
+      .reward =
+          "eq. (2) of seed 002 on module 3's tip, cases added: −2 every step, −G_dist (mm) "
+          "beyond 5 mm, −5 (20 − O_dist) within 20 mm of the plate, −10000 on a collision, "
+          "−100 outside B",
+      .episode_end =
+          "terminated on success, a collision, leaving B "
+          "(terminate_outside_boundary) or a non-finite state; truncated by the time "
+          "limit (150 steps)",
+      .parameters = std::move(parameters),
+  };
+}
+
+}  // namespace
+
+EnvDescription ReachEnv::robot_description() {
+  std::vector<EnvDescription::Parameter> robot = {
+      {"robot.backend", "", "twin, or bridge to the lab's devices"},
+      {"robot.bridge.*", "", "with backend: bridge, the links (docs/hardware.md)", true},
+      {"robot.control_period_s", "s", "how long a step holds the commands"},
+      {"robot.observe_pressures", "", "PneumaticArm/Robot-v0's; the task reads the tips only"}};
+  const std::vector<EnvDescription::Parameter> arm = arm_parameters("robot.");
+  robot.insert(robot.end(), arm.begin(), arm.end());
+  return reach_description(std::move(robot));
+}
+
+EnvDescription ReachEnv::model_description() {
+  return reach_description(
+      {{"model", "",
+        "a model file or a `tendril model fit` run (9 tips, 9 pressures); default "
+        "LinearArmModel, a stand-in that is not the arm",
+        true},
+       {"rest_mm", "mm", "the 9 tips with every chamber vented, where episodes start", true},
+       {"rest_from", "", "else a pneumatic data set whose first row is the rest", true},
+       {"rest_jitter_mm", "mm", "noise on the rest at each reset"}});
+}
+
 }  // namespace tendril::envs::pneumatic

@@ -144,4 +144,30 @@ bool RobotEnv::describe_scene(Scene& scene) const {
   return true;
 }
 
+EnvDescription RobotEnv::description() {
+  std::vector<EnvDescription::Parameter> parameters = {
+      {"backend", "", "twin, or bridge to the lab's devices"},
+      {"bridge.*", "",
+       "with backend: bridge, the links to the regulators and the motion capture "
+       "(docs/hardware.md)",
+       true},
+      {"control_period_s", "s", "how long a step holds the commands (whole 10 ms samples)"},
+      {"observe_pressures", "", "append the 9 measured pressures to the observation"}};
+  const std::vector<EnvDescription::Parameter> arm = arm_parameters("");
+  parameters.insert(parameters.end(), arm.begin(), arm.end());
+  return {
+      .observation = {{"tip of module 1 x y z (robot frame, z down from the base plane)", "mm", 3},
+                      {"tip of module 2 x y z", "mm", 3},
+                      {"tip of module 3 x y z", "mm", 3}},
+      .action = {{"pressure commands of chambers 3m + c (module m, chamber c), clamped to the "
+                  "ceiling",
+                  "bar", kChambers}},
+      .reward = "0 (the robot has no task)",
+      .episode_end =
+          "terminated only when the twin's state becomes non-finite; truncated by the "
+          "time limit (150 steps, a trial of seed 002)",
+      .parameters = std::move(parameters),
+  };
+}
+
 }  // namespace tendril::envs::pneumatic

@@ -5,6 +5,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/physics/twins/pneumatic/pneumatic_arm.hpp"
 
 namespace tendril::envs::pneumatic {
@@ -33,6 +34,8 @@ class RobotEnv : public Env {
   static constexpr const char* kId = "PneumaticArm/Robot-v0";
   static constexpr int64_t kTrialSteps = 150;  // registered time limit (seed 002, Fig. 8)
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   RobotEnv(const physics::pneumatic::PneumaticArmSpec& spec, double control_period,
            bool observe_pressures);

@@ -143,4 +143,33 @@ void DoubleIntegrator::load_state(SnapshotReader& in) {
   elapsed_steps_ = static_cast<int>(elapsed);
 }
 
+EnvDescription DoubleIntegrator::description() {
+  return {
+      .observation = {{"position x", "m"},
+                      {"velocity ẋ", "m/s"},
+                      {"elapsed fraction of the horizon t/T", "1"}},
+      .action = {{"commanded acceleration, |a| ≤ max_acceleration (discrete_actions ≥ 2: the index "
+                  "of one of n evenly spaced levels)",
+                  "m/s²"}},
+      .reward =
+          "−|x' − goal_position| per step, minus unsafe_penalty where the new state is "
+          "unsafe (seed 001 §6.4.1; Table 6.1's penalty baseline)",
+      .episode_end =
+          "terminated beyond the absolute bounds |x| > absolute_position_limit or "
+          "|ẋ| > absolute_velocity_limit; truncated after horizon steps",
+      .parameters = {{"position_limit", "m", "safe |x|"},
+                     {"velocity_limit", "m/s", "safe |ẋ|"},
+                     {"absolute_position_limit", "m", "|x| beyond which the episode ends"},
+                     {"absolute_velocity_limit", "m/s", "|ẋ| beyond which the episode ends"},
+                     {"max_acceleration", "m/s²", "largest |a|"},
+                     {"goal_position", "m", "the task's target x"},
+                     {"dt", "s", "time per step"},
+                     {"horizon", "steps", "T: truncation, and the observation's time scale"},
+                     {"discrete_actions", "", "0: a Box action; n ≥ 2: Discrete(n)"},
+                     {"start_position", "m", "starts uniform in ±start_position"},
+                     {"start_velocity", "m/s", "starts uniform in ±start_velocity"},
+                     {"unsafe_penalty", "1", "subtracted from the reward of unsafe steps"}},
+  };
+}
+
 }  // namespace tendril::envs::safe_control

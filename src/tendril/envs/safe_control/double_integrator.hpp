@@ -7,6 +7,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs::safe_control {
 
@@ -52,6 +53,8 @@ class DoubleIntegrator : public Env {
   };
   // Registry factory; params are the fields of Params by name.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   DoubleIntegrator() : DoubleIntegrator(Params{}) {}
   explicit DoubleIntegrator(Params params);

@@ -73,7 +73,8 @@ DubinsCar::DubinsCar(Params params) : params_(params) {
   high << inf, inf, 1.0f, 1.0f, 1.0f;
   observation_space_ = Space::box(low, high);
   if (params_.discrete_actions > 0) {
-    action_space_ = Space::discrete(params_.discrete_actions * std::max(params_.discrete_speeds, 1));
+    action_space_ =
+        Space::discrete(params_.discrete_actions * std::max(params_.discrete_speeds, 1));
   } else if (params_.speed_control) {
     action_space_ = Space::box(Eigen::Vector2f(static_cast<float>(-params_.max_turn_rate),
                                                static_cast<float>(params_.min_speed)),
@@ -207,6 +208,48 @@ void DubinsCar::load_state(SnapshotReader& in) {
   y_ = y;
   heading_ = heading;
   elapsed_steps_ = static_cast<int>(elapsed);
+}
+
+EnvDescription DubinsCar::description() {
+  return {
+      .observation = {{"position x", "m"},
+                      {"position y", "m"},
+                      {"cos ψ (heading from the x axis)", "1"},
+                      {"sin ψ", "1"},
+                      {"elapsed fraction of the horizon t/T", "1"}},
+      .action = {{"turn rate ω, |ω| ≤ max_turn_rate (speed_control: then the speed v, one more "
+                  "entry; discrete_actions ≥ 2: one index)",
+                  "rad/s"}},
+      .reward =
+          "−distance_weight ‖p' − goal‖ + goal_bonus inside the goal disc, minus "
+          "unsafe_penalty where the new state is unsafe (seed 001 §6.4.1)",
+      .episode_end =
+          "terminated when |x| or |y| exceeds absolute_limit; truncated after horizon "
+          "steps",
+      .parameters = {{"speed", "m/s", "forward speed (the top speed with speed_control)"},
+                     {"max_turn_rate", "rad/s", "largest |ω|"},
+                     {"box_limit", "m", "safe |x|, |y|"},
+                     {"obstacle_radius", "m", "keep-out disc at the origin"},
+                     {"absolute_limit", "m", "|x|, |y| beyond which the episode ends"},
+                     {"goal_x", "m", "goal centre x"},
+                     {"goal_y", "m", "goal centre y"},
+                     {"goal_radius", "m", "goal disc radius"},
+                     {"goal_bonus", "1", "reward inside the goal disc"},
+                     {"distance_weight", "1/m", "weight of the goal distance"},
+                     {"dt", "s", "time per step"},
+                     {"horizon", "steps", "T: truncation, and the observation's time scale"},
+                     {"discrete_actions", "", "0: a Box action; n ≥ 2: n turn rates"},
+                     {"discrete_speeds", "",
+                      "with speed_control and discrete turn rates: m speeds"},
+                     {"start_low", "m", "starts: x, y uniform in [start_low, start_high]"},
+                     {"start_high", "m", "see start_low"},
+                     {"heading_low", "rad", "starts: ψ uniform in [heading_low, heading_high]"},
+                     {"heading_high", "rad", "see heading_low"},
+                     {"start_anywhere", "", "start anywhere in the safe set instead"},
+                     {"unsafe_penalty", "1", "subtracted from the reward of unsafe steps"},
+                     {"speed_control", "", "the action is [ω, v], v in [min_speed, speed]"},
+                     {"min_speed", "m/s", "lowest speed with speed_control"}},
+  };
 }
 
 }  // namespace tendril::envs::safe_control

@@ -7,6 +7,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 
 namespace tendril::envs::safe_control {
 
@@ -69,6 +70,8 @@ class DubinsCar : public Env {
     double min_speed = 0.0;      // m/s
   };
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   DubinsCar() : DubinsCar(Params{}) {}
   explicit DubinsCar(Params params);

@@ -76,4 +76,51 @@ bool LearnedReachEnv::describe_scene(Scene& scene) const {
   return true;
 }
 
+EnvDescription LearnedReachEnv::description() {
+  const LearnedReachOptions defaults;
+  std::vector<EnvDescription::Entries> observation = {
+      {"bend θx, θy", "°", 2},
+      {"bend rate θ̇x, θ̇y", "°/s", 2},
+      {"previous step's throttles u_x, u_y", "1", 2},
+      {"goal θx, θy", "°", 2},
+      {"goal θ̇x, θ̇y", "°/s", 2}};
+  if (defaults.power_proxy) {
+    observation.push_back({"coil heat proxies +x, −x, +y, −y (eqs. 5.1–5.4)", "1", 4});
+  }
+  if (defaults.history > 0) {
+    observation.push_back(
+        {"history rows [θx, θy, θ̇x, θ̇y, u_x, u_y], oldest first (° and °/s "
+         "for the state, 1 for the throttles)",
+         "°, °/s, 1", 6 * defaults.history});
+  }
+  return {
+      .observation = std::move(observation),
+      .action = {{"throttle u_x, in [−10, 10]", "1"}, {"throttle u_y, in [−10, 10]", "1"}},
+      .reward =
+          "seed 001 eqs. 5.5–5.8: −(‖θ − θ_goal‖ + ‖u/10‖²); at the goal (within the "
+          "tolerance δ) +1000 − sqrt(‖θ̇‖‖θ̇_goal‖ − θ̇·θ̇_goal); −5000 out of bounds",
+      .episode_end =
+          "terminated at the goal, out of bounds (|θ|, |θ̇| > bound) or on a non-finite "
+          "prediction; truncated by the time limit (250 steps)",
+      .parameters = {{"model", "",
+                      "a model file or a `tendril model fit` run; default "
+                      "LinearLimbModel, a stand-in that is not the limb",
+                      true},
+                     {"seed", "", "random stream of the first reset without a seed"},
+                     {"power_proxy", "", "append the four coil heat proxies"},
+                     {"integer_throttles", "", "round actions to whole throttles"},
+                     {"dynamic_tolerance", "", "shrink δ from tolerance_start to tolerance_end"},
+                     {"tolerance_start", "°", "δ at first"},
+                     {"tolerance_end", "°", "δ at the end (the thesis' 1°)"},
+                     {"tolerance_steps", "steps", "simulated steps of one env until δ = end"},
+                     {"bound", "° and °/s", "θ, θ̇ beyond which an episode ends"},
+                     {"full_reset_probability", "1", "chance that a reset draws a new state"},
+                     {"goal_angle_range", "°", "goal θ uniform in ± this"},
+                     {"goal_velocity_range", "°/s", "goal θ̇ uniform in ± this"},
+                     {"start_angle_range", "°", "full reset: θ uniform in ± this"},
+                     {"start_velocity_range", "°/s", "full reset: θ̇ uniform in ± this"},
+                     {"history", "rows", "rows of recent history appended (6 entries each)"}},
+  };
+}
+
 }  // namespace tendril::envs::sma_limb

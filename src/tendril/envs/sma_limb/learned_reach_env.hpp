@@ -5,6 +5,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/envs/sma_limb/learned_reach_batch.hpp"
 
 namespace tendril::envs::sma_limb {
@@ -26,6 +27,8 @@ class LearnedReachEnv : public Env {
 
   LearnedReachEnv(std::shared_ptr<DynamicsModel> model, LearnedReachOptions options, uint64_t seed);
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
   // The model `params.model` names, through the installed loader (LinearLimbModel without one).
   static std::shared_ptr<DynamicsModel> open_model(const Config& params);
 

@@ -127,4 +127,31 @@ void LearnedSafetyEnv::load_state(SnapshotReader& in) {
   elapsed_steps_ = static_cast<int>(elapsed);
 }
 
+EnvDescription LearnedSafetyEnv::description() {
+  return {
+      .observation = {{"bend θx, θy", "°", 2},
+                      {"bend rate θ̇x, θ̇y", "°/s", 2},
+                      {"elapsed fraction of the horizon t/T", "1"}},
+      .action = {{"diagonal move at full throttle: 0 (+10, +10), 1 (−10, +10), 2 (−10, −10), "
+                  "3 (+10, −10)",
+                  "1"}},
+      .reward =
+          "0 (the safety agent learns r_safe through the safety co-trainer; seed 001 "
+          "§6.5.2)",
+      .episode_end =
+          "terminated when ‖θ‖ ≥ safe_radius (terminate_on_unsafe), |θ̇| > "
+          "velocity_limit or on a non-finite prediction; truncated after horizon steps",
+      .parameters = {{"model", "",
+                      "a model file or a `tendril model fit` run; default "
+                      "LinearLimbModel, a stand-in that is not the limb",
+                      true},
+                     {"seed", "", "random stream of the first reset without a seed"},
+                     {"safe_radius", "°", "R of the safe disc ‖θ‖ < R"},
+                     {"start_velocity", "°/s", "starts: θ̇ uniform in ± this"},
+                     {"velocity_limit", "°/s", "|θ̇| beyond which the episode ends"},
+                     {"horizon", "steps", "T: truncation, and the observation's time scale"},
+                     {"terminate_on_unsafe", "", "leaving the safe disc ends the episode"}},
+  };
+}
+
 }  // namespace tendril::envs::sma_limb

@@ -8,6 +8,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/envs/learned/dynamics_model.hpp"
 #include "tendril/envs/learned/history_windows.hpp"
 
@@ -47,6 +48,8 @@ class LearnedSafetyEnv : public Env {
 
   LearnedSafetyEnv(std::shared_ptr<DynamicsModel> model, Params params, uint64_t seed);
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   const Space& observation_space() const override { return observation_space_; }
   const Space& action_space() const override { return action_space_; }

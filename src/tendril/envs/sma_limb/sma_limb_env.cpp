@@ -184,4 +184,31 @@ void SmaLimbEnv::apply_push(const Eigen::Vector2d& force_n, double duration_s) {
   robot_->push(force_n, duration_s);
 }
 
+EnvDescription SmaLimbEnv::description() {
+  return {
+      .observation = {{"bend reading θx, zero offset removed", "°"},
+                      {"bend reading θy, zero offset removed", "°"},
+                      {"time stamp of the reading since reset", "s"}},
+      .action = {{"throttle u_x, rounded to a whole level; + drives the +x coil, − the −x coil",
+                  "1"},
+                 {"throttle u_y, likewise for the y coils", "1"}},
+      .reward = "0 (the robot has no task)",
+      .episode_end =
+          "terminated only when a simulated limb's state becomes non-finite; no time "
+          "limit (a task or a TimeLimit decides)",
+      .parameters = {{"limb", "", "stiff or soft (seed 001's two limbs)"},
+                     {"tip_mass", "kg", "mass hung at the tip"},
+                     {"integrator", "", "the twin's rod integrator; default the limb's own", true},
+                     {"seed", "", "random stream of the first reset without a seed"},
+                     {"calibration", "",
+                      "required: a file of `tendril data calibrate`, or none "
+                      "(the nominal PWM table, raw readings)"},
+                     {"backend", "", "twin, or bridge to the firmware"},
+                     {"bridge.*", "",
+                      "with backend: bridge, the link and safety settings "
+                      "(docs/hardware.md)",
+                      true}},
+  };
+}
+
 }  // namespace tendril::envs::sma_limb

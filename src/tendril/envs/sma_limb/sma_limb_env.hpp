@@ -8,6 +8,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/envs/sma_limb/limb_calibration.hpp"
 #include "tendril/envs/sma_limb/limb_robot.hpp"
 
@@ -44,6 +45,8 @@ class SmaLimbEnv : public Env {
 
   SmaLimbEnv(std::unique_ptr<LimbRobot> robot, LimbCalibration calibration, uint64_t seed);
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   const Space& observation_space() const override { return observation_space_; }
   const Space& action_space() const override { return action_space_; }

@@ -233,4 +233,54 @@ bool Ur5Reach::describe_scene(Scene& scene) const {
   return true;
 }
 
+EnvDescription Ur5Reach::description() {
+  return {
+      .observation = {{"joint angles q, base to wrist 3", "rad", physics::ur5::kJoints},
+                      {"joint velocities q̇", "rad/s", physics::ur5::kJoints},
+                      {"flange position x y z", "m", 3},
+                      {"target position x y z", "m", 3},
+                      {"collision flag (1: this step collided)", "1"}},
+      .action = {{"joint-position deltas Δq = a · max_delta, a in [−1, 1]", "1",
+                  physics::ur5::kJoints}},
+      .reward =
+          "seed 004 §3.1: w_p (d_{t−1} − d_t) + w_d exp(−α d_t) − w_o θ/π − λ_u ‖a‖² − w_t "
+          "+ w_s [success] − w_c [collision], d the flange–target distance, θ the tool "
+          "axis's angle to straight down",
+      .episode_end =
+          "terminated on success (d ≤ success_distance and θ ≤ success_angle), a "
+          "collision or an unstable physics state; truncated by the time limit (1000 "
+          "steps, 20 s)",
+      .parameters =
+          {{"max_delta", "rad", "joint change per step at |a| = 1"},
+           {"frame_skip", "", "physics steps per action"},
+           {"timestep", "s", "physics time step"},
+           {"joint_noise", "rad", "uniform noise on every joint at reset"},
+           {"home", "rad",
+            "6 joint angles of the start pose; default tool down, flange at (0.25, 0, 0.10) m",
+            true},
+           {"action_space", "", "bounded ([−1, 1]) or unbounded (declared (−∞, ∞))"},
+           {"success_distance", "m", "d that counts as reached"},
+           {"success_angle", "rad", "θ that counts as tool down"},
+           {"obstacle_centre", "m", "centre of the obstacle box; default (0.40, 0, 0.10) m", true},
+           {"obstacle_half_extents", "m", "half extents of the box; default (0.05, 0.20, 0.10) m",
+            true},
+           {"model_file", "", "an MJCF with the scene's names, instead of the built-in", true},
+           {"target_low", "m", "corner of the target region; default (0.52, −0.25, 0.15) m", true},
+           {"target_high", "m", "opposite corner; default (0.70, 0.25, 0.30) m", true},
+           {"target_obstacle_margin", "m", "no target this close to the box"},
+           {"target_max_reach", "m", "no target farther from the shoulder"},
+           {"progress_weight", "1/m", "w_p"},
+           {"distance_weight", "1", "w_d"},
+           {"distance_sensitivity", "1/m", "α"},
+           {"orientation_weight", "1", "w_o"},
+           {"time_penalty", "1", "w_t, per step"},
+           {"success_bonus", "1", "w_s, once"},
+           {"collision_penalty", "1", "w_c, once"},
+           {"orientation_form", "", "penalty (−w_o θ/π) or bounded (w_o (1 − θ/π))"},
+           {"action_penalty", "1", "λ_u, constant"},
+           {"action_penalty_schedule.*", "1",
+            "instead of action_penalty: {start, end, steps}, λ_u linear in steps", true}},
+  };
+}
+
 }  // namespace tendril::envs::ur5

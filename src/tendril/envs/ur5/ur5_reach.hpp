@@ -8,6 +8,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
+#include "tendril/envs/env_description.hpp"
 #include "tendril/envs/step_schedule.hpp"
 #include "tendril/envs/ur5/reach_reward.hpp"
 #include "tendril/envs/ur5/reach_targets.hpp"
@@ -83,6 +84,8 @@ class Ur5Reach : public Env {
 
   // Registry factory; reads the parameters above and raises Error naming a bad key.
   static std::unique_ptr<Env> create(const Config& params);
+  // The environment in words, for `tendril list envs --describe` (env_description.hpp).
+  static EnvDescription description();
 
   Ur5Reach() : Ur5Reach(Params{}) {}
   explicit Ur5Reach(Params params);
