@@ -22,9 +22,10 @@ namespace tendril::envs::tendon_arm {
 //                that range (a tendon cannot push); a wrong size or a non-finite value is an Error.
 //   observation  the tip position, m, lab frame (origin at the clamped base, z up; the arm hangs
 //                to (0, 0, −0.30) at rest), as a tracker on the tip measures it; then each
-//                tendon's displacement, m (how far its motor has reeled it in since the arm hung
-//                straight: the rest path length less the path length, negative when the arm
-//                bends away from it), as the spool encoders measure it. 3 + tendons values.
+//                tendon's travel, m (how far its motor has reeled it in from the unloaded straight
+//                arm's tendon length: negative when the arm bends away from it, −0.8 mm at rest,
+//                where the arm's weight stretches it), as the spool encoders measure it. 3 +
+//                tendons values.
 //   step         holds the tensions for control_period_s (0.1 s: 500 rod steps of 0.2 ms).
 //   reset        the arm hanging still, tendons slack; the twin has no noise, so every reset is
 //                the same state whatever the seed.
