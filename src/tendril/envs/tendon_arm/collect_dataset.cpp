@@ -144,6 +144,7 @@ CollectionReport collect_dataset(const Config& config, const std::filesystem::pa
   table.set("resolution", "positions 1 um, tensions 0.1 mN");
   std::istringstream resolved(config.dump());
   for (std::string line; std::getline(resolved, line);) table.metadata.emplace_back("config", line);
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   data::write_table(file, table, schema);
   report.file = file;
   report.train_rows = train_rows;
