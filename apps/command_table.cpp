@@ -197,10 +197,11 @@ std::vector<CommandSpec> command_table() {
       .min_positionals = 1,
       .max_positionals = 1,
       .summary = "Record a robot's data set (SMA limb: explore or babble; pneumatic arm: the "
-                 "saturating pressure signal).",
+                 "saturating pressure signal; tendon arm: random held tensions).",
       .description = limb_file + " A data set is a CSV file with a schema and a CRC-32C line "
                                  "(docs/data_sets.md).",
-      .options = {output("The data set (pneumatic arm; the SMA limb's come from its file).")},
+      .options = {output(
+          "The data set (pneumatic and tendon arm; the SMA limb's come from its file).")},
       .takes_set = true,
       .set_help = "Change a key of the file, e.g. --set output=data/mine.csv.",
       .examples = {"tendril data collect configs/sma_limb/explore_stiff.yaml "

@@ -39,6 +39,9 @@ TEST(Registry, ListsTheBuiltinReferenceTasks) {
                                                         "SmaLimb/LearnedReach-v0",
                                                         "SmaLimb/LearnedSafety-v0",
                                                         "SmaLimb/Robot-v0",
+                                                        "TendonArm/LearnedReach-v0",
+                                                        "TendonArm/Reach-v0",
+                                                        "TendonArm/Robot-v0",
                                                         "UR5/Reach-v0"}));
   EXPECT_EQ(builtin_registry().spec("Pendulum-v1").max_episode_steps, 200);
   EXPECT_EQ(builtin_registry().spec("CartPole-v1").max_episode_steps, 500);
@@ -59,7 +62,8 @@ TEST(Registry, UnknownIdIsNamedWithTheRegisteredIds) {
             "MountainCarContinuous-v0, Pendulum-v1, PneumaticArm/LearnedReach-v0, "
             "PneumaticArm/Reach-v0, "
             "PneumaticArm/Robot-v0, Safety/DoubleIntegrator-v0, Safety/DubinsCar-v0, "
-            "SmaLimb/LearnedReach-v0, SmaLimb/LearnedSafety-v0, SmaLimb/Robot-v0, UR5/Reach-v0");
+            "SmaLimb/LearnedReach-v0, SmaLimb/LearnedSafety-v0, SmaLimb/Robot-v0, "
+            "TendonArm/LearnedReach-v0, TendonArm/Reach-v0, TendonArm/Robot-v0, UR5/Reach-v0");
 }
 
 TEST(Registry, UnknownParameterIsNamedWithTheEnvironment) {

@@ -60,7 +60,8 @@ REFERENCE = os.environ.get("TENDRIL_REFERENCE", "")
 
 # What a registered environment cannot default (tests/support/required_env_params.hpp): the SMA
 # limb robot always names its calibration; "none" is its nominal table on raw readings.
-REQUIRED_PARAMS = {"SmaLimb/Robot-v0": {"calibration": "none"}}
+REQUIRED_PARAMS = {"SmaLimb/Robot-v0": {"calibration": "none"},
+                   "TendonArm/LearnedReach-v0": {"model": "constant_curvature"}}
 
 
 def make_by_id(env_id, **kwargs):

@@ -18,6 +18,7 @@
 #include "tendril/envs/sma_limb/learned_reach_vec_env.hpp"
 #include "tendril/envs/sma_limb/learned_safety_env.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
+#include "tendril/envs/tendon_arm/register.hpp"
 #include "tendril/envs/ur5/ur5_reach.hpp"
 
 namespace tendril::envs {
@@ -112,6 +113,8 @@ void register_builtin_envs(Registry& registry) {
   registry.add({"Beam/EllipseFollow-v0", &beam::make_ellipse_follow, beam::kEllipseEpisodeSteps,
                 "mass-spring beam's tip follows an ellipse, with levels (task 4)",
                 &beam::ellipse_follow_description});
+  // A tendon-driven continuum arm: its robot, its reach task on the robot and on a learned model.
+  tendon_arm::register_envs(registry);
 }
 
 }  // namespace tendril::envs
