@@ -34,8 +34,8 @@ bool is_limb_file(const Arguments& line) {
 int tendon_arm_collect(const Arguments& line) {
   std::string invocation = "tendril data collect";
   for (const std::string& arg : line.raw) invocation += " " + arg;
-  const auto report =
-      envs::tendon_arm::collect_dataset(line.load_config(file_kind::kDataProtocol), line.value("output", ""), invocation);
+  const auto report = envs::tendon_arm::collect_dataset(line.load_config(file_kind::kDataProtocol),
+                                                        line.value("output", ""), invocation);
   std::printf("tendril data collect: %d training and %d test rows in %.2f s of wall time\n",
               report.train_rows, report.test_rows, report.wall_seconds);
   std::printf("wrote %s\n", report.file.string().c_str());
@@ -46,7 +46,8 @@ int tendon_arm_collect(const Arguments& line) {
 
 int data_collect_command(const Arguments& line) {
   if (is_limb_file(line)) return limb_protocol(line, {"explore", "babble"});
-  const std::string robot = line.load_config(file_kind::kDataProtocol).child("robot").get_or<std::string>("id", "");
+  const std::string robot =
+      line.load_config(file_kind::kDataProtocol).child("robot").get_or<std::string>("id", "");
   if (robot.rfind("TendonArm/", 0) == 0) return tendon_arm_collect(line);
   return pneumatic_collect(line);
 }

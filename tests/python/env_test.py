@@ -243,8 +243,7 @@ def test_describe_gives_each_environment_in_words():
         ("g", "10", "m/s²")]
     for env_id in IDS:
         described = tendril.describe(env_id)
-        env = tendril.make(env_id, **({"calibration": "none"} if env_id == "SmaLimb/Robot-v0"
-                                      else {}))
+        env = make_by_id(env_id)
         size = int(np.prod(env.observation_space.shape))
         assert sum(e["count"] for e in described["observation"]) == size, env_id
     with pytest.raises(tendril.Error, match="unknown environment id 'Nope-v0'"):

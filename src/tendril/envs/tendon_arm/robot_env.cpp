@@ -138,8 +138,8 @@ EnvDescription RobotEnv::description() {
   const int tendons = ArmSpec{}.tendons;
   d.observation = {{"tip position x, y, z (lab frame, origin at the clamped base, z up)", "m", 3},
                    {"travel of tendon k (reeled in from the unloaded straight arm)", "m", tendons}};
-  d.action = {{"tension of tendon k (at 360° k / tendons from +x), clamped to [0, max]", "N",
-               tendons}};
+  d.action = {
+      {"tension of tendon k (at 360° k / tendons from +x), clamped to [0, max]", "N", tendons}};
   d.reward = "0: a robot, no task";
   d.episode_end =
       "terminated only if the rod's state became non-finite (info nan = 1); truncated after "
