@@ -3,6 +3,8 @@ with CMake, then places its products in the package —
   tendril/_tendril*.so     the extension module
   tendril/_version.py      the version (from VERSION, through CMake)
   tendril/bin/tendril      the command-line program (the `tendril` command runs it)
+  tendril/bin/libtendril_dynamics_plugin.so   its learned-model part (LibTorch), loaded by the
+                           program when a command needs it (docs/architecture.md)
   tendril/dashboard/       the page `tendril serve` serves
 The CMake build directory is TENDRIL_CMAKE_BUILD_DIR when set, else build-pip/ beside the
 sources; it is kept between builds, so a rebuild compiles only what changed. With ccache
@@ -60,6 +62,11 @@ class CMakeBuild(build_ext):
         program = os.path.join(package, "bin", "tendril")
         shutil.copyfile(os.path.join(build, "apps", "tendril"), program)
         os.chmod(program, 0o755)
+        # Building the program built its plugin; the program looks for it in its own directory.
+        plugin = "libtendril_dynamics_plugin.so"
+        built_plugin = os.path.join(build, "apps", plugin)
+        if os.path.exists(built_plugin):
+            shutil.copyfile(built_plugin, os.path.join(package, "bin", plugin))
         pages = os.path.join(build, "web", "dashboard")
         if os.path.isdir(pages):
             shutil.copytree(pages, os.path.join(package, "dashboard"), dirs_exist_ok=True)

@@ -1,4 +1,6 @@
-// `tendril dynamics`: fit learned dynamics models and measure how well they predict.
+// `tendril model fit`, `tendril model eval` and the continuation of a stopped fit: fit learned
+// dynamics models and measure how well they predict. Part of the dynamics plugin
+// (dynamics_plugin.hpp), which the program loads when one of them runs.
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -8,6 +10,7 @@
 
 #include "cli/arguments.hpp"
 #include "commands.hpp"
+#include "dynamics_plugin.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/file_kind.hpp"
@@ -73,7 +76,7 @@ int report_fit(const FitResult& result) {
 
 }  // namespace
 
-int model_fit_command(const Arguments& line) {
+int run_model_fit(const Arguments& line) {
   const FitExperiment experiment =
       FitExperiment::from_config(line.load_config(file_kind::kModelFit));
   fs::path run = line.value("output", "");
@@ -93,7 +96,7 @@ int model_fit_command(const Arguments& line) {
   return report_fit(run_fit(experiment, run, line.has("quiet")));
 }
 
-std::optional<int> resume_stopped_fit(const Arguments& line) {
+std::optional<int> continue_stopped_fit(const Arguments& line) {
   const fs::path run = line.positional.front();
   if (!is_stopped_fit(run)) {
     require(!fs::exists(run / kModelFileName),
@@ -185,7 +188,7 @@ std::vector<EvaluationRow> baseline_rows(Model& model, const SequenceData& data,
 
 }  // namespace
 
-int model_eval_command(const Arguments& line) {
+int run_model_eval(const Arguments& line) {
   require(line.positional.size() == 2, "expected a run directory (or model file) and a data set",
           "command line");
   // Refuse before the work, not after it: nothing is overwritten.

@@ -12,8 +12,8 @@
 #include "tendril/nn/threads.hpp"
 #endif
 #ifdef TENDRIL_WITH_DYNAMICS
-#include "tendril/dynamics/env_model_loader.hpp"
-#include "tendril/dynamics/policy_heads.hpp"
+#include "dynamics_plugin.hpp"
+#include "tendril/core/dynamics_layer.hpp"
 #endif
 
 int main(int argc, char** argv) {
@@ -39,10 +39,10 @@ int main(int argc, char** argv) {
   tendril::nn::configure_numerics(1);
 #endif
 #ifdef TENDRIL_WITH_DYNAMICS
-  // Environments around learned models open them from their `model` parameter.
-  tendril::dynamics::install_model_loader();
-  // Policies with a learned-model head (seed 001 ch. 5) are trained and loaded.
-  tendril::dynamics::install_policy_heads();
+  // Environments around learned models (opened from their `model` parameter) and policies with
+  // a learned-model head (seed 001 ch. 5) load the dynamics plugin, and LibTorch with it, when
+  // the first of them is made: commands without learned models start without it.
+  tendril::set_dynamics_layer_loader([] { tendril::apps::dynamics_plugin().install(); });
 #endif
   return tendril::apps::run_command_line(tendril::apps::command_table(), args);
 }

@@ -2,12 +2,13 @@
 # A new user's installation: a fresh virtual environment that sees Debian's packages (numpy,
 # matplotlib), `pip install .` without network or build isolation, then the package from
 # outside the source tree — its version, an environment, a rendered picture — and the `tendril`
-# command on PATH; and a wheel from `pip wheel .` holding the extension and the program.
+# command on PATH, without LibTorch until a model command loads the installed dynamics plugin;
+# and a wheel from `pip wheel .` holding the extension, the program and its plugin.
 #   install_test.sh <source dir> <work dir> <python> <CMake build dir for pip>
 set -euo pipefail
 source=$1 work=$2 python=$3
 mkdir -p "$work"
-rm -rf "$work/venv" "$work/wheels"
+rm -rf "$work/venv" "$work/wheels" "$work/fit"
 export TENDRIL_CMAKE_BUILD_DIR=$4
 export PIP_NO_INDEX=1 PIP_DISABLE_PIP_VERSION_CHECK=1
 
@@ -45,6 +46,14 @@ tendril list envs | grep -q "Elastica/Tracking3D-v0"
 tendril --version | grep -q "tendril $expected"
 tendril export --help | grep -q "C header"
 tendril plot --help | grep -q "curves"
+# LibTorch only with the installed dynamics plugin, loaded by a model command: a one-epoch fit.
+program=$(python -c "import os, tendril; print(os.path.join(os.path.dirname(tendril.__file__), 'bin', 'tendril'))")
+if ldd "$program" | grep -q libtorch; then echo "the installed program links LibTorch"; exit 1; fi
+tendril model fit "$source/configs/dynamics/sma_stiff_seq2seq.yaml" -o "$work/fit" --quiet \
+  --set data.file="$source/data/sma_limb/stiff_exploration_prepared.csv" --set training.epochs=1 \
+  --set training.windows_per_epoch=256 --set evaluation.horizons_s=[1] >"$work/fit.log"
+[ -s "$work/fit/model.tdm" ] || { echo "the installed program fitted no model"; exit 1; }
+rm -rf "$work/fit"
 
 "$work/venv/bin/pip" wheel --quiet --no-build-isolation --no-deps -w "$work/wheels" "$source"
 echo "pip wheel: $(( ($(date +%s%N) - installed) / 1000000 )) ms"
@@ -56,7 +65,8 @@ import zipfile
 wheels = glob.glob(f"{sys.argv[1]}/tendril-{sys.argv[2]}-*.whl")
 assert len(wheels) == 1, wheels
 names = zipfile.ZipFile(wheels[0]).namelist()
-for needed in ("tendril/bin/tendril", "tendril/_version.py", "tendril_plot/__main__.py"):
+for needed in ("tendril/bin/tendril", "tendril/bin/libtendril_dynamics_plugin.so",
+               "tendril/_version.py", "tendril_plot/__main__.py"):
     assert needed in names, f"{needed} missing from {wheels[0]}"
 assert any(n.startswith("tendril/_tendril") and n.endswith(".so") for n in names), names
 mode = zipfile.ZipFile(wheels[0]).getinfo("tendril/bin/tendril").external_attr >> 16

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "support/error_message.hpp"
+#include "tendril/core/dynamics_layer.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/nn/mlp_head.hpp"
 
@@ -65,6 +66,41 @@ TEST(FeatureHeads, AKindThisProgramDoesNotHaveIsAClearError) {
   // The test program does not link the dynamics layer's heads.
   const std::string message = testing::error_message([&] { create_feature_head(spec, rng); });
   EXPECT_NE(message.find("needs the dynamics layer"), std::string::npos) << message;
+}
+
+// A program that loads the dynamics layer on demand (the command line) loads it at the first
+// lookup of a learned-model kind, and only then; the kinds it installs are the ones found. An
+// MLP head stands in for the learned-model head here.
+TEST(FeatureHeads, ALearnedModelKindLoadsTheDynamicsLayerOnDemand) {
+  int loads = 0;
+  set_dynamics_layer_loader([&] {
+    ++loads;
+    FeatureHeadKind stand_in;
+    stand_in.create = [](const FeatureHeadSpec&, Rng& rng) {
+      FeatureHeadSpec mlp;
+      mlp.kind = "mlp";
+      mlp.inputs = 4;
+      mlp.layers = {3};
+      return MlpHead::create(mlp, rng);
+    };
+    stand_in.read = &MlpHead::read;
+    install_feature_head_kind("lk_full", stand_in);
+  });
+  FeatureHeadSpec mlp;
+  mlp.kind = "mlp";
+  mlp.inputs = 2;
+  mlp.layers = {2};
+  Rng rng(3);
+  create_feature_head(mlp, rng);
+  EXPECT_EQ(loads, 0) << "an MLP head needs no dynamics layer";
+
+  FeatureHeadSpec learned;
+  learned.kind = "lk_full";
+  learned.model = "runs/m";
+  EXPECT_EQ(create_feature_head(learned, rng).head->output_size(), 3);
+  EXPECT_EQ(create_feature_head(learned, rng).parameters.size(), 5 * 3);
+  EXPECT_EQ(loads, 1);
+  set_dynamics_layer_loader({});
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/dynamics/architecture.hpp"
 #include "tendril/dynamics/evaluation.hpp"
+#include "tendril/dynamics/model_file.hpp"
 #include "tendril/dynamics/prepared_csv.hpp"
 #include "tendril/dynamics/trainer.hpp"
 
@@ -68,7 +69,6 @@ struct FitResult {
 // without the evaluation; resume_fit continues it to exactly the uninterrupted fit's files.
 FitResult run_fit(const FitExperiment& experiment, const std::filesystem::path& run_directory,
                   bool quiet = false);
-inline constexpr const char* kFitCheckpointName = "fit.ckpt";
 // Whether `run_directory` holds a fit stopped with a checkpoint.
 bool is_stopped_fit(const std::filesystem::path& run_directory);
 // Continues a stopped fit in its run directory with the config.yaml written there (a relative

@@ -11,6 +11,10 @@ class Model;
 // reads and writes it without LibTorch. The file alone rebuilds the model: no experiment file is
 // needed.
 inline constexpr const char* kModelFileName = "model.tdm";
+// A fit's run directory holds kModelFileName, and while the fit is stopped with a checkpoint
+// (fit_run.hpp) this file; both names are torch-free, so the command line finds fit runs without
+// loading the layer.
+inline constexpr const char* kFitCheckpointName = "fit.ckpt";
 
 // Writes `model` to `file` atomically. Raises Error if `file` exists, unless `replace` (a run
 // replacing its own model when validation improves): nothing else is ever overwritten.

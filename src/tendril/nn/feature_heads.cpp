@@ -2,7 +2,9 @@
 
 #include <map>
 #include <mutex>
+#include <optional>
 
+#include "tendril/core/dynamics_layer.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/nn/mlp_head.hpp"
 
@@ -23,11 +25,21 @@ KindTable& table() {
 
 const char* const kKnownKinds = "mlp, lk_encoder or lk_full";
 
-FeatureHeadKind kind_named(const std::string& kind, const std::string& where) {
+std::optional<FeatureHeadKind> installed_kind(const std::string& kind) {
   std::lock_guard lock(table().mutex);
   const auto found = table().kinds.find(kind);
-  if (found != table().kinds.end()) return found->second;
-  if (kind == "lk_encoder" || kind == "lk_full") {
+  if (found == table().kinds.end()) return std::nullopt;
+  return found->second;
+}
+
+FeatureHeadKind kind_named(const std::string& kind, const std::string& where) {
+  if (std::optional<FeatureHeadKind> found = installed_kind(kind)) return *found;
+  const bool learned_model = kind == "lk_encoder" || kind == "lk_full";
+  // A program that loads the dynamics layer on demand loads it now; it installs these kinds.
+  if (learned_model && load_dynamics_layer()) {
+    if (std::optional<FeatureHeadKind> found = installed_kind(kind)) return *found;
+  }
+  if (learned_model) {
     throw Error("the policy head '" + kind +
                     "' needs the dynamics layer, which this program was built without",
                 where);

@@ -53,8 +53,9 @@ struct FeatureHeadKind {
 
 // Heads are implemented in more than one layer (the MLP head here, the learned-model heads in
 // dynamics/), so a program that links the upper layer installs their kinds at start-up
-// (dynamics::install_policy_heads), as it installs the model loader of learned-model envs.
-// "mlp" is always known. Installing a kind again replaces it.
+// (dynamics::install_policy_heads), as it installs the model loader of learned-model envs; a
+// program that loads the layer on demand (core/dynamics_layer.hpp) loads it at the first lookup
+// of a learned-model kind. "mlp" is always known. Installing a kind again replaces it.
 void install_feature_head_kind(const std::string& kind, FeatureHeadKind builder);
 
 // Raises Error naming the kind when it is unknown or not installed in this program.

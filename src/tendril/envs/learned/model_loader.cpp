@@ -2,6 +2,7 @@
 
 #include <mutex>
 
+#include "tendril/core/dynamics_layer.hpp"
 #include "tendril/core/error.hpp"
 
 namespace tendril::envs {
@@ -27,11 +28,13 @@ void install_dynamics_model_loader(DynamicsModelLoader loader) {
 
 std::unique_ptr<DynamicsModel> load_dynamics_model(const std::string& file_or_run,
                                                    std::string_view who) {
-  DynamicsModelLoader loader;
-  {
+  auto installed = [] {
     std::lock_guard lock(slot().mutex);
-    loader = slot().loader;
-  }
+    return slot().loader;
+  };
+  DynamicsModelLoader loader = installed();
+  // A program that loads the dynamics layer on demand loads it now; it installs the loader.
+  if (!loader && load_dynamics_layer()) loader = installed();
   if (!loader) {
     throw Error("cannot open the learned model '" + file_or_run +
                     "': this program was built without the dynamics layer",
