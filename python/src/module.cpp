@@ -7,6 +7,10 @@
 #include "bindings.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/numerics_mode.hpp"
+#ifdef TENDRIL_WITH_DYNAMICS
+#include "tendril/dynamics/env_model_loader.hpp"
+#include "tendril/dynamics/policy_heads.hpp"
+#endif
 
 PYBIND11_MODULE(_tendril, m) {
   m.doc() = "tendril's environments, vector environments, policies and trainer (C++).";
@@ -25,6 +29,12 @@ PYBIND11_MODULE(_tendril, m) {
       Py_XDECREF(message);
     }
   });
+#ifdef TENDRIL_WITH_DYNAMICS
+  // Environments around learned models open them from their `model` parameter, and policies
+  // with learned-model heads are trained and loaded, as from the command line.
+  tendril::dynamics::install_model_loader();
+  tendril::dynamics::install_policy_heads();
+#endif
   tendril::python::bind_env(m);
   tendril::python::bind_vec_env(m);
   tendril::python::bind_policy(m);
