@@ -9,8 +9,8 @@
 #include "cli/arguments.hpp"
 #include "commands.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/rl/runs_report.hpp"
-#include "tendril/rl/sweep_summary.hpp"
+#include "tendril/sweeps/runs_report.hpp"
+#include "tendril/sweeps/sweep_summary.hpp"
 
 namespace tendril::apps {
 
@@ -42,8 +42,8 @@ int report_command(const Arguments& line) {
   const std::vector<double> steps =
       line.has("at") ? steps_of(line.value("at", "")) : std::vector<double>{};
   std::vector<std::filesystem::path> paths(line.positional.begin(), line.positional.end());
-  const rl::SweepSummary summary = rl::summarize_runs(rl::run_directories(paths));
-  std::fputs(rl::runs_report(summary, steps).c_str(), stdout);
+  const sweeps::SweepSummary summary = sweeps::summarize_runs(sweeps::run_directories(paths));
+  std::fputs(sweeps::runs_report(summary, steps).c_str(), stdout);
   return 0;
 }
 

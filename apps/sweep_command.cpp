@@ -16,11 +16,11 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
-#include "tendril/rl/sweep.hpp"
-#include "tendril/rl/sweep_runner.hpp"
-#include "tendril/rl/sweep_share.hpp"
-#include "tendril/rl/sweep_slurm.hpp"
-#include "tendril/rl/sweep_summary.hpp"
+#include "tendril/sweeps/sweep.hpp"
+#include "tendril/sweeps/sweep_runner.hpp"
+#include "tendril/sweeps/sweep_share.hpp"
+#include "tendril/sweeps/sweep_slurm.hpp"
+#include "tendril/sweeps/sweep_summary.hpp"
 
 namespace tendril::apps {
 
@@ -57,14 +57,14 @@ bool plot(const std::vector<std::string>& args) {
 
 // The figure of one metric ("rollout/ep_rew_mean" or "eval") over the runs that have data for
 // it, seeds grouped into mean ± std exactly as the summary groups them; false if drawing failed.
-bool draw(const rl::SweepSummary& summary, const std::string& metric, const fs::path& out,
+bool draw(const sweeps::SweepSummary& summary, const std::string& metric, const fs::path& out,
           const std::string& title) {
   std::vector<std::string> args = {"curves"};
   std::string labels;
-  for (const rl::ConfigurationSummary& c : summary.configurations) {
+  for (const sweeps::ConfigurationSummary& c : summary.configurations) {
     bool any = false;
     for (const int i : c.runs) {
-      const rl::RunSummary& run = summary.runs[i];
+      const sweeps::RunSummary& run = summary.runs[i];
       if ((metric == "eval" ? run.eval : run.train).x.empty()) continue;
       args.push_back(run.directory.string());
       any = true;
@@ -83,13 +83,13 @@ bool draw(const rl::SweepSummary& summary, const std::string& metric, const fs::
 // With one grid axis besides the seed, of numbers, and two configurations or more finished: the
 // final evaluation (mean ± std over seeds) against that axis, from configurations.csv. Returns
 // false if drawing failed, and leaves `out` absent when there is nothing to draw.
-bool draw_final(const rl::SweepSummary& summary, const fs::path& table, const fs::path& out,
+bool draw_final(const sweeps::SweepSummary& summary, const fs::path& table, const fs::path& out,
                 const std::string& title) {
   const auto& configurations = summary.configurations;
   if (configurations.empty() || configurations.front().settings.size() != 1) return true;
   double low = 0.0, high = 0.0;
   int finished = 0;
-  for (const rl::ConfigurationSummary& c : configurations) {
+  for (const sweeps::ConfigurationSummary& c : configurations) {
     const std::string& text = c.settings.front().second;
     char* end = nullptr;
     const double value = std::strtod(text.c_str(), &end);
@@ -115,11 +115,11 @@ bool draw_final(const rl::SweepSummary& summary, const fs::path& table, const fs
 }
 
 // Writes the sweep's summary (summary/ in its output): tables, curves and figures.
-int aggregate(const rl::Sweep& sweep, bool figures) {
-  const rl::SweepSummary summary = rl::summarize_sweep(sweep);
+int aggregate(const sweeps::Sweep& sweep, bool figures) {
+  const sweeps::SweepSummary summary = sweeps::summarize_sweep(sweep);
   const fs::path directory = fs::path(sweep.output) / "summary";
   fs::create_directories(directory);
-  rl::write_sweep_summary(sweep, summary, directory, {});  // the tables the figures draw from
+  sweeps::write_sweep_summary(sweep, summary, directory, {});  // the tables the figures draw from
   std::vector<std::pair<std::string, std::string>> drawn;
   bool failed = false;
   if (figures) {
@@ -149,7 +149,7 @@ int aggregate(const rl::Sweep& sweep, bool figures) {
       }
     }
   }
-  rl::write_sweep_summary(sweep, summary, directory, drawn);
+  sweeps::write_sweep_summary(sweep, summary, directory, drawn);
   std::printf("summary: %s (%zu configurations, %zu runs; wall time %.1f s)\n",
               (directory / "summary.md").c_str(), summary.configurations.size(),
               summary.runs.size(), summary.wall_seconds);
@@ -159,8 +159,8 @@ int aggregate(const rl::Sweep& sweep, bool figures) {
 }  // namespace
 
 int sweep_slurm_command(const Arguments& line) {
-  const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
-  rl::SlurmOptions options;
+  const sweeps::Sweep sweep = sweeps::Sweep::load(line.positional.front());
+  sweeps::SlurmOptions options;
   options.tendril = this_program();
   options.sweep_file = fs::absolute(line.positional.front()).lexically_normal();
   options.working_directory = fs::current_path();
@@ -174,7 +174,7 @@ int sweep_slurm_command(const Arguments& line) {
   options.account = line.value("account", "");
   options.stop_before =
       static_cast<int>(line.integer("stop-before", options.stop_before, 0, 1 << 24));
-  const std::string script = rl::slurm_script(sweep, options);
+  const std::string script = sweeps::slurm_script(sweep, options);
   const fs::path folder = fs::path(sweep.output) / "slurm";
   fs::create_directories(folder);  // the tasks' logs go here too
   const fs::path file = line.value("output", (folder / "sweep.sbatch").string());
@@ -185,15 +185,15 @@ int sweep_slurm_command(const Arguments& line) {
 }
 
 int sweep_summarize_command(const Arguments& line) {
-  return aggregate(rl::Sweep::load(line.positional.front()), !line.has("no-figures"));
+  return aggregate(sweeps::Sweep::load(line.positional.front()), !line.has("no-figures"));
 }
 
 namespace {
 
 // The runs this process takes: all, its rank's share (--rank/--ranks, or MPI's or Slurm's
 // environment), or the one --only names.
-std::vector<int> runs_of_this_process(const Arguments& line, int count, rl::SweepShare& share) {
-  share = rl::SweepShare::from_environment();
+std::vector<int> runs_of_this_process(const Arguments& line, int count, sweeps::SweepShare& share) {
+  share = sweeps::SweepShare::from_environment();
   require(line.has("rank") == line.has("ranks"), "are given together", "--rank/--ranks");
   if (line.has("ranks")) {
     share.ranks = static_cast<int>(line.integer("ranks", 1, 1, 1 << 20));
@@ -211,9 +211,9 @@ std::vector<int> runs_of_this_process(const Arguments& line, int count, rl::Swee
 }  // namespace
 
 int sweep_list_command(const Arguments& line) {
-  const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
-  const std::vector<rl::Sweep::Run> runs = sweep.runs();
-  rl::SweepShare share;
+  const sweeps::Sweep sweep = sweeps::Sweep::load(line.positional.front());
+  const std::vector<sweeps::Sweep::Run> runs = sweep.runs();
+  sweeps::SweepShare share;
   for (const int i : runs_of_this_process(line, static_cast<int>(runs.size()), share)) {
     std::printf("%3d  %s\n", i, sweep.directory(runs[i]).c_str());
   }
@@ -221,11 +221,11 @@ int sweep_list_command(const Arguments& line) {
 }
 
 int sweep_run_command(const Arguments& line) {
-  const rl::Sweep sweep = rl::Sweep::load(line.positional.front());
-  const std::vector<rl::Sweep::Run> runs = sweep.runs();
+  const sweeps::Sweep sweep = sweeps::Sweep::load(line.positional.front());
+  const std::vector<sweeps::Sweep::Run> runs = sweep.runs();
   const int count = static_cast<int>(runs.size());
 
-  rl::SweepShare share;
+  sweeps::SweepShare share;
   const std::vector<int> indices = runs_of_this_process(line, count, share);
   const std::string who = share.ranks > 1 ? "[rank " + std::to_string(share.rank) + "/" +
                                                 std::to_string(share.ranks) + "] "
@@ -234,15 +234,15 @@ int sweep_run_command(const Arguments& line) {
   options.quiet = line.has("quiet");
   catch_interrupts();
   const auto start = std::chrono::steady_clock::now();
-  rl::log_sweep_event(sweep, "start", share);
-  const auto report = [&](const rl::SweepRunRecord& record, bool done) {
+  sweeps::log_sweep_event(sweep, "start", share);
+  const auto report = [&](const sweeps::SweepRunRecord& record, bool done) {
     if (!done) {
       std::printf("%s[%d/%d] %s: %s\n", who.c_str(), record.index + 1, count,
-                  record.directory.c_str(), rl::to_string(record.status));
-    } else if (record.status == rl::SweepRunStatus::busy ||
-               record.status == rl::SweepRunStatus::finished_earlier) {
+                  record.directory.c_str(), sweeps::to_string(record.status));
+    } else if (record.status == sweeps::SweepRunStatus::busy ||
+               record.status == sweeps::SweepRunStatus::finished_earlier) {
       std::printf("%s[%d/%d] %s: %s\n", who.c_str(), record.index + 1, count,
-                  record.directory.c_str(), rl::to_string(record.status));
+                  record.directory.c_str(), sweeps::to_string(record.status));
     } else if (!record.result.interrupted) {
       std::printf("%s  %lld steps in %.1f s (%.0f steps/s), final evaluation %.2f +/- %.2f\n",
                   who.c_str(), static_cast<long long>(record.result.timesteps),
@@ -251,9 +251,9 @@ int sweep_run_command(const Arguments& line) {
     }
     std::fflush(stdout);
   };
-  const std::vector<rl::SweepRunRecord> records =
-      rl::train_sweep_runs(sweep, indices, options, report);
-  rl::log_sweep_event(sweep, "end", share);
+  const std::vector<sweeps::SweepRunRecord> records =
+      sweeps::train_sweep_runs(sweep, indices, options, report);
+  sweeps::log_sweep_event(sweep, "end", share);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!records.empty() && records.back().result.interrupted) {
@@ -267,7 +267,7 @@ int sweep_run_command(const Arguments& line) {
   }
   std::printf("%s%zu runs of this process in %.1f s wall time\n", who.c_str(), indices.size(),
               seconds);
-  if (!rl::sweep_finished(sweep)) {
+  if (!sweeps::sweep_finished(sweep)) {
     std::printf(
         "%sother runs are not finished yet: the process that finishes the last one writes the "
         "summary (or: tendril sweep summarize %s)\n",
@@ -276,7 +276,7 @@ int sweep_run_command(const Arguments& line) {
   }
   int status = 0;
   const bool wrote =
-      rl::with_summary_lock(sweep, [&] { status = aggregate(sweep, !line.has("no-figures")); });
+      sweeps::with_summary_lock(sweep, [&] { status = aggregate(sweep, !line.has("no-figures")); });
   if (!wrote) std::printf("%sanother process is writing the summary\n", who.c_str());
   return status;
 }

@@ -13,7 +13,7 @@
 #endif
 #include "support/error_message.hpp"
 #include "tendril/rl/experiment.hpp"
-#include "tendril/rl/sweep.hpp"
+#include "tendril/sweeps/sweep.hpp"
 #include "tendril/safety/safety_evaluation.hpp"
 
 // Every training experiment and sweep file under configs/ reads: each key is known and valid,
@@ -113,8 +113,8 @@ TEST_F(InRepositoryRoot, EveryRunOfEveryShippedSweepReads) {
     if (Config::load_file(file).get<std::string>("kind") != "sweep") continue;
     ++sweeps;
     SCOPED_TRACE(file.string());
-    const rl::Sweep sweep = rl::Sweep::load(file);
-    const std::vector<rl::Sweep::Run> runs = sweep.runs();
+    const sweeps::Sweep sweep = sweeps::Sweep::load(file);
+    const std::vector<sweeps::Sweep::Run> runs = sweep.runs();
     EXPECT_FALSE(runs.empty());
     for (const auto& run : runs) {
       SCOPED_TRACE(run.name);

@@ -280,7 +280,7 @@ class FigureTest(unittest.TestCase):
 
 class SeedGroupTest(unittest.TestCase):
     def test_the_rule_of_the_sweep_summary(self):
-        # The cases of tests/rl/sweep_summary_test.cpp (SeedGroup): both sides group alike.
+        # The cases of tests/sweeps/sweep_summary_test.cpp (SeedGroup): both sides group alike.
         cases = {("n_steps_256-seed_3", ""): "n_steps_256", ("ppo_case1_seed0", ""): "ppo_case1",
                  ("seed_3-tau_0.01", ""): "tau_0.01",
                  ("n_steps_64-seed_12-gamma_0.9", ""): "n_steps_64-gamma_0.9",

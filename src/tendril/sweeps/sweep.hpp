@@ -7,7 +7,7 @@
 
 #include "tendril/core/config.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 // A grid of runs of one experiment, e.g. a batch-size study over five seeds:
 //
@@ -37,4 +37,4 @@ struct Sweep {
   Config experiment(const Run& run) const;
 };
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "tendril/rl/sweep.hpp"
-#include "tendril/rl/sweep_share.hpp"
 #include "tendril/rl/trainer.hpp"
+#include "tendril/sweeps/sweep.hpp"
+#include "tendril/sweeps/sweep_share.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 // What one process did with one run of a sweep.
 enum class SweepRunStatus {
@@ -25,7 +25,7 @@ struct SweepRunRecord {
   int index = 0;
   std::filesystem::path directory;
   SweepRunStatus status = SweepRunStatus::started;
-  TrainResult result;  // of the training (started, restarted, resumed)
+  rl::TrainResult result;  // of the training (started, restarted, resumed)
 };
 
 // Trains the runs `indices` of `sweep`, one after the other, into `sweep.directory(run)`.
@@ -36,7 +36,7 @@ struct SweepRunRecord {
 // (its record has result.interrupted set). `on_run` sees each record before training
 // (result empty) and after.
 std::vector<SweepRunRecord> train_sweep_runs(
-    const Sweep& sweep, const std::vector<int>& indices, TrainOptions options,
+    const Sweep& sweep, const std::vector<int>& indices, rl::TrainOptions options,
     const std::function<void(const SweepRunRecord&, bool done)>& on_run = {});
 
 // Whether every run of the sweep has finished (holds model.policy).
@@ -51,4 +51,4 @@ void log_sweep_event(const Sweep& sweep, const std::string& event, const SweepSh
 // another process holds that lock (it is writing the same summary).
 bool with_summary_lock(const Sweep& sweep, const std::function<void()>& action);
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,4 +1,4 @@
-#include "tendril/rl/sweep_summary.hpp"
+#include "tendril/sweeps/sweep_summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 namespace fs = std::filesystem;
 
@@ -481,4 +481,4 @@ void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary, const 
   write_file_atomically(directory / "summary.md", page, "sweep summary");
 }
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,10 +1,10 @@
-#include "tendril/rl/runs_report.hpp"
+#include "tendril/sweeps/runs_report.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <optional>
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 namespace {
 
@@ -107,4 +107,4 @@ std::string runs_report(const SweepSummary& summary, const std::vector<double>& 
   return page;
 }
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,4 +1,4 @@
-#include "tendril/rl/sweep_summary.hpp"
+#include "tendril/sweeps/sweep_summary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
-#include "tendril/rl/runs_report.hpp"
-#include "tendril/rl/sweep.hpp"
+#include "tendril/sweeps/runs_report.hpp"
+#include "tendril/sweeps/sweep.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 namespace {
 
 namespace fs = std::filesystem;
@@ -278,4 +278,4 @@ TEST_F(SweepSummaries, RunsOutsideASweepGroupBySeedTokenAndReport) {
 }
 
 }  // namespace
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,11 +1,11 @@
-#include "tendril/rl/sweep_slurm.hpp"
+#include "tendril/sweeps/sweep_slurm.hpp"
 
 #include <algorithm>
 
 #include "tendril/core/error.hpp"
 #include "tendril/rl/experiment.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 namespace {
 
@@ -33,7 +33,7 @@ std::string slurm_script(const Sweep& sweep, const SlurmOptions& options) {
   int cpus = options.cpus_per_task;
   if (cpus == 0) {
     for (const auto& run : runs) {
-      cpus = std::max(cpus, Experiment::from_config(sweep.experiment(run)).env.n_envs);
+      cpus = std::max(cpus, rl::Experiment::from_config(sweep.experiment(run)).env.n_envs);
     }
   }
   const fs::path output = options.working_directory / sweep.output;
@@ -74,4 +74,4 @@ std::string slurm_script(const Sweep& sweep, const SlurmOptions& options) {
   return s;
 }
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

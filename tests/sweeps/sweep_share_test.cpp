@@ -1,4 +1,4 @@
-#include "tendril/rl/sweep_share.hpp"
+#include "tendril/sweeps/sweep_share.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "support/error_message.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 namespace {
 
 TEST(SweepShare, RanksCoverEveryRunExactlyOnce) {
@@ -88,4 +88,4 @@ TEST_F(LauncherEnvironment, MalformedValuesAreErrorsNamingTheVariable) {
 }
 
 }  // namespace
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

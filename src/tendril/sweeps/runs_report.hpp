@@ -3,9 +3,9 @@
 #include <string>
 #include <vector>
 
-#include "tendril/rl/sweep_summary.hpp"
+#include "tendril/sweeps/sweep_summary.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 // A Markdown report of runs (`tendril report`): per configuration, the mean ± standard
 // deviation over its runs of the training mean at each of `steps` and at the end, of the final
@@ -13,4 +13,4 @@ namespace tendril::rl {
 // at a step is training_mean_at's; a run that has not reached the step has none there.
 std::string runs_report(const SweepSummary& summary, const std::vector<double>& steps);
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,4 +1,4 @@
-#include "tendril/rl/sweep_runner.hpp"
+#include "tendril/sweeps/sweep_runner.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -13,7 +13,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/core/run_lock.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 namespace fs = std::filesystem;
 
@@ -40,7 +40,7 @@ bool finished(const fs::path& directory) { return fs::exists(directory / "model.
 // What to do with a run no other process holds, decided under its lock.
 SweepRunStatus plan(const fs::path& directory) {
   if (finished(directory)) return SweepRunStatus::finished_earlier;
-  if (!checkpoints(directory).empty()) return SweepRunStatus::resumed;
+  if (!rl::checkpoints(directory).empty()) return SweepRunStatus::resumed;
   return fs::exists(directory / "config.yaml") ? SweepRunStatus::restarted
                                                : SweepRunStatus::started;
 }
@@ -48,7 +48,7 @@ SweepRunStatus plan(const fs::path& directory) {
 }  // namespace
 
 std::vector<SweepRunRecord> train_sweep_runs(
-    const Sweep& sweep, const std::vector<int>& indices, TrainOptions options,
+    const Sweep& sweep, const std::vector<int>& indices, rl::TrainOptions options,
     const std::function<void(const SweepRunRecord&, bool done)>& on_run) {
   // Runs interrupted before their first checkpoint start again: nothing of them is lost.
   options.restart_unstarted = true;
@@ -81,9 +81,9 @@ std::vector<SweepRunRecord> train_sweep_runs(
     }
     try {
       record.result = record.status == SweepRunStatus::resumed
-                          ? resume(record.directory, options)
-                          : train(Experiment::from_config(sweep.experiment(runs[index])),
-                                  record.directory, options);
+                          ? rl::resume(record.directory, options)
+                          : rl::train(rl::Experiment::from_config(sweep.experiment(runs[index])),
+                                      record.directory, options);
     } catch (const Error&) {
       if (RunLock::try_take(record.directory)) throw;  // not a race with another process
       record.status = SweepRunStatus::busy;
@@ -137,4 +137,4 @@ bool with_summary_lock(const Sweep& sweep, const std::function<void()>& action) 
   return true;
 }
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

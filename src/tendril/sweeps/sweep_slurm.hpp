@@ -3,13 +3,13 @@
 #include <filesystem>
 #include <string>
 
-#include "tendril/rl/sweep.hpp"
+#include "tendril/sweeps/sweep.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 // A Slurm job-array script for a sweep (`tendril sweep <file> --slurm`): array task i of K runs
 //   cd <working directory> && <tendril> sweep <file> --rank i --ranks K --quiet
-// so it trains the runs r with r mod K == i (rl/sweep_share), skipping finished ones and
+// so it trains the runs r with r mod K == i (sweeps/sweep_share), skipping finished ones and
 // resuming interrupted ones; the task that finds every run finished writes the summary. With
 // K = the number of runs, each task trains one run.
 struct SlurmOptions {
@@ -30,4 +30,4 @@ struct SlurmOptions {
 
 std::string slurm_script(const Sweep& sweep, const SlurmOptions& options);
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,4 +1,4 @@
-#include "tendril/rl/sweep_slurm.hpp"
+#include "tendril/sweeps/sweep_slurm.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "support/scratch_directory.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 namespace {
 
 namespace fs = std::filesystem;
@@ -104,4 +104,4 @@ TEST_F(SlurmScripts, FewerTasksShareTheRunsAndResourcesAreOptions) {
 }
 
 }  // namespace
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 // The part of a sweep one process trains when several train it at once: process `rank` of
 // `ranks` takes the runs i with i mod ranks == rank (round robin, so every process gets runs
@@ -23,4 +23,4 @@ struct SweepShare {
   std::vector<int> runs(int run_count) const;
 };
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

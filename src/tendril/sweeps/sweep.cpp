@@ -1,10 +1,10 @@
-#include "tendril/rl/sweep.hpp"
+#include "tendril/sweeps/sweep.hpp"
 
 #include "tendril/core/error.hpp"
 #include "tendril/core/file_kind.hpp"
 #include "tendril/rl/experiment.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 Sweep Sweep::load(const std::filesystem::path& file) {
   const Config config = Config::load_file(file);
@@ -22,7 +22,7 @@ Sweep Sweep::load(const std::filesystem::path& file) {
   sweep.output = config.get<std::string>("output");
   config.reject_unknown();
   // Every run's experiment must load: a bad key or value fails before anything runs.
-  for (const Run& run : sweep.runs()) Experiment::from_config(sweep.experiment(run));
+  for (const Run& run : sweep.runs()) rl::Experiment::from_config(sweep.experiment(run));
   return sweep;
 }
 
@@ -54,4 +54,4 @@ Config Sweep::experiment(const Run& run) const {
   return config;
 }
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

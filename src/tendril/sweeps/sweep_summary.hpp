@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "tendril/rl/sweep.hpp"
+#include "tendril/sweeps/sweep.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 // A run's name without its seed token, a trailing time stamp and the separators left at its ends,
 // the group of runs that differ only by seed: "n_steps_256-seed_3" → "n_steps_256",
@@ -103,4 +103,4 @@ void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary,
                          const std::filesystem::path& directory,
                          const std::vector<std::pair<std::string, std::string>>& figures);
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,10 +1,10 @@
-#include "tendril/rl/sweep_share.hpp"
+#include "tendril/sweeps/sweep_share.hpp"
 
 #include <cstdlib>
 
 #include "tendril/core/error.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 
 namespace {
 
@@ -47,4 +47,4 @@ std::vector<int> SweepShare::runs(int run_count) const {
   return indices;
 }
 
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

@@ -1,4 +1,4 @@
-#include "tendril/rl/sweep.hpp"
+#include "tendril/sweeps/sweep.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "support/scratch_directory.hpp"
 #include "tendril/rl/experiment.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 namespace {
 
 namespace fs = std::filesystem;
@@ -43,7 +43,7 @@ TEST_F(Sweeps, RunsAreTheGridsProductFirstKeySlowest) {
   EXPECT_EQ(runs[0].name, "n_steps_32-seed_0");
   EXPECT_EQ(runs[2].name, "n_steps_32-seed_2");
   EXPECT_EQ(runs[3].name, "n_steps_128-seed_0");
-  const Experiment experiment = Experiment::from_config(sweep.experiment(runs[4]));
+  const rl::Experiment experiment = rl::Experiment::from_config(sweep.experiment(runs[4]));
   EXPECT_EQ(experiment.seed, 1u);
   EXPECT_EQ(experiment.algo.get<int64_t>("n_steps"), 128);
   EXPECT_EQ(experiment.env.n_envs, 2);
@@ -73,4 +73,4 @@ TEST_F(Sweeps, BadFilesAreRejectedByName) {
 }
 
 }  // namespace
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps

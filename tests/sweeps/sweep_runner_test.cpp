@@ -1,4 +1,4 @@
-#include "tendril/rl/sweep_runner.hpp"
+#include "tendril/sweeps/sweep_runner.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "support/scratch_directory.hpp"
 #include "tendril/core/run_lock.hpp"
 
-namespace tendril::rl {
+namespace tendril::sweeps {
 namespace {
 
 namespace fs = std::filesystem;
@@ -49,15 +49,15 @@ std::vector<SweepRunStatus> statuses(const std::vector<SweepRunRecord>& records)
 TEST_F(SweepRuns, AnInterruptedSweepResumesWhereEachRunStopped) {
   const Sweep s = sweep();
   const auto runs = s.runs();
-  const TrainOptions quiet{.stop_at = std::nullopt, .quiet = true};
+  const rl::TrainOptions quiet{.stop_at = std::nullopt, .quiet = true};
   ASSERT_EQ(statuses(train_sweep_runs(s, {0}, quiet)),
             std::vector<SweepRunStatus>{SweepRunStatus::started});
   const std::string policy0 = read(s.directory(runs[0]) / "model.policy");
   const auto time0 = fs::last_write_time(s.directory(runs[0]) / "model.policy");
 
-  const TrainOptions paused{.stop_at = 256, .quiet = true};
-  train(Experiment::from_config(s.experiment(runs[1])), s.directory(runs[1]), paused);
-  train(Experiment::from_config(s.experiment(runs[2])), s.directory(runs[2]), paused);
+  const rl::TrainOptions paused{.stop_at = 256, .quiet = true};
+  rl::train(rl::Experiment::from_config(s.experiment(runs[1])), s.directory(runs[1]), paused);
+  rl::train(rl::Experiment::from_config(s.experiment(runs[2])), s.directory(runs[2]), paused);
   fs::remove_all(s.directory(runs[2]) / "checkpoints");  // killed before its first checkpoint
   std::ofstream(s.directory(runs[2]) / "run.lock") << "999999\n";
   ASSERT_FALSE(fs::exists(s.directory(runs[1]) / "model.policy"));
@@ -83,7 +83,7 @@ TEST_F(SweepRuns, AnInterruptedSweepResumesWhereEachRunStopped) {
   EXPECT_FALSE(sweep_finished(s));
   for (const int i : {1, 2}) {
     const fs::path whole = directory_ / ("whole_" + std::to_string(i));
-    train(Experiment::from_config(s.experiment(runs[i])), whole, quiet);
+    rl::train(rl::Experiment::from_config(s.experiment(runs[i])), whole, quiet);
     EXPECT_EQ(read(s.directory(runs[i]) / "model.policy"), read(whole / "model.policy")) << i;
     EXPECT_EQ(read(s.directory(runs[i]) / "eval.csv"), read(whole / "eval.csv")) << i;
   }
@@ -112,4 +112,4 @@ TEST_F(SweepRuns, EachProcessLogsItsStartAndEnd) {
 }
 
 }  // namespace
-}  // namespace tendril::rl
+}  // namespace tendril::sweeps
