@@ -2,7 +2,8 @@
 # A new user's installation: a fresh virtual environment that sees Debian's packages (numpy,
 # matplotlib), `pip install .` without network or build isolation, then the package from
 # outside the source tree — its version, an environment, a rendered picture — and the `tendril`
-# command on PATH, without LibTorch until a model command loads the installed dynamics plugin;
+# command on PATH, without LibTorch until a model command loads the installed dynamics plugin,
+# and a learned-model environment from Python on the model that command fitted;
 # and a wheel from `pip wheel .` holding the extension, the program and its plugin.
 #   install_test.sh <source dir> <work dir> <python> <CMake build dir for pip>
 set -euo pipefail
@@ -53,6 +54,19 @@ tendril model fit "$source/configs/dynamics/sma_stiff_seq2seq.yaml" -o "$work/fi
   --set data.file="$source/data/sma_limb/stiff_exploration_prepared.csv" --set training.epochs=1 \
   --set training.windows_per_epoch=256 --set evaluation.horizons_s=[1] >"$work/fit.log"
 [ -s "$work/fit/model.tdm" ] || { echo "the installed program fitted no model"; exit 1; }
+# The same model drives a learned-model environment from the installed Python package.
+python - "$work/fit" <<'PY'
+import sys
+
+import numpy as np
+import tendril
+
+env = tendril.make("SmaLimb/LearnedReach-v0", model=sys.argv[1])
+observation, _ = env.reset(seed=0)
+observation, reward, terminated, truncated, info = env.step(env.action_space.sample())
+assert np.all(np.isfinite(observation)) and np.isfinite(reward), (observation, reward)
+print(f"SmaLimb/LearnedReach-v0 from Python on {sys.argv[1]}: observation {observation.shape}")
+PY
 rm -rf "$work/fit"
 
 "$work/venv/bin/pip" wheel --quiet --no-build-isolation --no-deps -w "$work/wheels" "$source"
