@@ -114,6 +114,8 @@ std::vector<CommandSpec> command_table() {
                    "tendril run runs/arm --record runs/arm/episodes --episodes 2"},
       .run = run_command,
   });
+#endif
+#ifdef TENDRIL_WITH_SWEEPS
   table.push_back({
       .words = {"sweep", "run"},
       .positionals = "SWEEP.yaml",
