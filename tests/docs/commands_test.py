@@ -79,7 +79,7 @@ def check(page, table, problems):
     for line, text, block in shown_commands(page):
         args = tokens(text)
         if not args or not re.fullmatch(r"[a-z][a-z-]*", args[0]):
-            continue  # prose such as "tendril's" or a placeholder
+            continue  # not a command: prose ("tendril's …") or a placeholder ("<verb>")
         if args[0] not in verbs:
             # Prose that starts with the program's name ("tendril trains …") is not a command;
             # a code block's line is.
