@@ -93,6 +93,15 @@ bool asks_for_help(const std::vector<std::string>& args) {
   return false;
 }
 
+// The commands of a group word ("model"), one per line with its summary.
+std::string group_help(const std::vector<const CommandSpec*>& group) {
+  std::string text;
+  for (const CommandSpec* member : group) {
+    text += "  tendril " + member->name() + "\n" + wrapped(member->summary, 6);
+  }
+  return text;
+}
+
 int unknown_command(const std::vector<CommandSpec>& table, const std::vector<std::string>& args) {
   // A group word alone ("model") or with an unknown verb ("model fir").
   const std::vector<const CommandSpec*> group = under(table, {args[0]});
@@ -204,12 +213,7 @@ int run_command_line(const std::vector<CommandSpec>& table, const std::vector<st
     const CommandSpec* command = match(table, words, taken);
     const std::vector<const CommandSpec*> group = under(table, words);
     if ((command == nullptr || taken != words.size()) && !group.empty()) {
-      // A group word: its commands.
-      std::string text;
-      for (const CommandSpec* member : group) {
-        text += "  tendril " + member->name() + "\n" + wrapped(member->summary, 6);
-      }
-      std::fputs(text.c_str(), stdout);
+      std::fputs(group_help(group).c_str(), stdout);
       return 0;
     }
     if (command == nullptr || taken != words.size()) return unknown_command(table, words);
@@ -218,7 +222,15 @@ int run_command_line(const std::vector<CommandSpec>& table, const std::vector<st
   }
   std::size_t taken = 0;
   const CommandSpec* command = match(table, args, taken);
-  if (command == nullptr) return unknown_command(table, args);
+  if (command == nullptr) {
+    // "tendril model --help": the group's commands, as `tendril help model` prints them.
+    const std::vector<const CommandSpec*> group = under(table, {args[0]});
+    if (args.size() == 2 && (args[1] == "--help" || args[1] == "-h") && !group.empty()) {
+      std::fputs(group_help(group).c_str(), stdout);
+      return 0;
+    }
+    return unknown_command(table, args);
+  }
   const std::vector<std::string> rest(args.begin() + static_cast<std::ptrdiff_t>(taken),
                                       args.end());
   if (!command->passthrough && asks_for_help(rest)) {

@@ -19,6 +19,16 @@ while read -r command; do
   [ $rc -eq 2 ] || fail "'$command --no-such-option' exited $rc"
   echo "$out" | grep -q -- "--no-such-option" || fail "'$command --no-such-option': $out"
 done <<<"$commands"
+# A group word with --help or -h lists its commands, as `tendril help GROUP` does.
+groups=$(echo "$commands" | awk 'NF > 1 {print $1}' | sort -u)
+[ -n "$groups" ] || fail "no command groups found"
+for group in $groups; do
+  expected=$("$tendril" help "$group")
+  for flag in --help -h; do
+    out=$("$tendril" "$group" $flag 2>&1) || fail "'$group $flag' exited $?"
+    [ "$out" = "$expected" ] || fail "'$group $flag' differs from 'tendril help $group': $out"
+  done
+done
 "$tendril" --version | grep -q '^tendril [0-9]' || fail "--version"
 [ $failures -eq 0 ] && echo "ok: $(echo "$commands" | wc -l) commands"
 exit $failures
