@@ -139,6 +139,13 @@ void Algorithm::load(const std::filesystem::path& file, const Labels& expected,
   load_checkpoint(ArchiveReader(file, "checkpoint"), expected, read_extra);
 }
 
+void Algorithm::warm_start(const std::filesystem::path& file) {
+  const ArchiveReader reader(file, "checkpoint");
+  check_checkpoint_fits(reader);
+  const std::function<void()> install_state = read_state(reader);
+  install_state();
+}
+
 void Algorithm::load_checkpoint_bytes(std::string bytes, const std::string& name) {
   load_checkpoint(ArchiveReader::from_bytes(std::move(bytes), "checkpoint", name), {}, {});
 }
@@ -171,8 +178,7 @@ ArchiveWriter Algorithm::checkpoint_writer(const Labels& labels) const {
   return writer;
 }
 
-void Algorithm::load_checkpoint(const ArchiveReader& reader, const Labels& expected,
-                                const ExtraReader& read_extra) {
+void Algorithm::check_checkpoint_fits(const ArchiveReader& reader, const Labels& expected) const {
   const std::string& where = reader.name();
   const int64_t format = reader.get_int("format");
   if (format != kCheckpointFormat) {
@@ -201,6 +207,12 @@ void Algorithm::load_checkpoint(const ArchiveReader& reader, const Labels& expec
           "the checkpoint's actions are " + actions.describe() + ", this run's " +
               env_.action_space().describe(),
           where);
+}
+
+void Algorithm::load_checkpoint(const ArchiveReader& reader, const Labels& expected,
+                                const ExtraReader& read_extra) {
+  const std::string& where = reader.name();
+  check_checkpoint_fits(reader, expected);
   Rng action_rng = reader.get_rng("rng_actions");
   Rng update_rng = reader.get_rng("rng_updates");
   Rng predict_rng = reader.get_rng("rng_predict");
@@ -212,10 +224,11 @@ void Algorithm::load_checkpoint(const ArchiveReader& reader, const Labels& expec
   const Snapshot vec_env = reader.get_bytes("vec_env");
   envs::BatchMatrix last_observations;
   if (reader.contains("last_observations")) {
-    const Eigen::VectorXf values = reader.get_floats(
-        "last_observations", static_cast<int64_t>(env_.num_envs()) * observations.size());
-    last_observations =
-        Eigen::Map<const envs::BatchMatrix>(values.data(), env_.num_envs(), observations.size());
+    const Eigen::VectorXf values =
+        reader.get_floats("last_observations",
+                          static_cast<int64_t>(env_.num_envs()) * env_.observation_space().size());
+    last_observations = Eigen::Map<const envs::BatchMatrix>(values.data(), env_.num_envs(),
+                                                            env_.observation_space().size());
   }
   const std::function<void()> install_state = read_state(reader);
   const std::function<void()> install_extra = read_extra ? read_extra(reader) : nullptr;

@@ -66,6 +66,12 @@ class Algorithm {
             const ExtraWriter& extra = {}) const;
   void load(const std::filesystem::path& file, const Labels& expected = {},
             const ExtraReader& read_extra = {});
+  // A warm start (seed 003 trains case 3 from its case-2 model): installs the learned state of
+  // another run's checkpoint of the same algorithm, spaces and network — weights, target
+  // networks, optimizer moments, the entropy coefficient — and keeps this run's own step
+  // counters, random streams, episode records, environments and (empty) replay buffer, as
+  // Stable-Baselines3's load-then-learn on a new environment does. Changes nothing on any error.
+  void warm_start(const std::filesystem::path& file);
   // A checkpoint as bytes and back, for one nested in another (a co-trained agent's state in
   // its run's checkpoint); `name` stands for the file in messages.
   std::string checkpoint_bytes() const;
@@ -108,6 +114,9 @@ class Algorithm {
   virtual std::function<void()> read_state(const ArchiveReader& reader) = 0;
 
   ArchiveWriter checkpoint_writer(const Labels& labels) const;
+  // Raises Error unless `reader` is a checkpoint of this build's format with the `expected`
+  // labels, of this algorithm and of this run's spaces.
+  void check_checkpoint_fits(const ArchiveReader& reader, const Labels& expected = {}) const;
   void load_checkpoint(const ArchiveReader& reader, const Labels& expected,
                        const ExtraReader& read_extra);
 

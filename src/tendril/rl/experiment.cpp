@@ -1,6 +1,7 @@
 #include "tendril/rl/experiment.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <new>
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/core/file_kind.hpp"
 #include "tendril/rl/algorithm_registry.hpp"
+#include "tendril/rl/trainer.hpp"
 
 namespace tendril::rl {
 
@@ -63,6 +65,25 @@ Experiment Experiment::from_config(Config config) {
   require(e.checkpoint_freq >= 0, "must be non-negative", key(config, "checkpoint_freq"));
   e.save_replay_buffer = config.get_or<bool>("save_replay_buffer", false);
   e.output = config.get_or<std::string>("output", "runs/" + e.algorithm);
+  e.warm_start = config.get_or<std::string>("warm_start", "");
+  if (!e.warm_start.empty()) {
+    require(!e.env.normalize_observation,
+            "a warm start carries the learned weights, not the observation statistics they were "
+            "learned on: train without env.normalize_observation",
+            key(config, "warm_start"));
+    if (std::filesystem::is_directory(e.warm_start)) {
+      try {
+        e.warm_start = newest_intact_checkpoint(e.warm_start).string();
+      } catch (const Error& error) {
+        throw Error(std::string(error.what()) +
+                        " (a warm start reads the source run's checkpoints: train it with "
+                        "checkpoint_freq > 0)",
+                    key(config, "warm_start"));
+      }
+      config.set("warm_start", e.warm_start);
+      e.config = config;
+    }
+  }
 
   // Read the algorithm's configuration (the reward discount follows its γ), then build the
   // algorithm once on one copy of the environment: bad keys, and an action space the algorithm
@@ -75,7 +96,12 @@ Experiment Experiment::from_config(Config config) {
   probe_options.normalize_observation = probe_options.normalize_reward = false;
   auto probe = make_vec_env(probe_options);
   try {
-    algorithm.factory(*probe, e.algo, e.seed);
+    const std::unique_ptr<Algorithm> probe_algorithm = algorithm.factory(*probe, e.algo, e.seed);
+    // The source must fit (algorithm, spaces, network); one that no longer exists is refused by
+    // a new run (rl::train), not by a resumed one, which no longer needs it.
+    if (!e.warm_start.empty() && std::filesystem::is_regular_file(e.warm_start)) {
+      probe_algorithm->warm_start(e.warm_start);
+    }
   } catch (const std::bad_alloc&) {
     throw Error(out_of_memory_message(e), config.source());
   }

@@ -35,6 +35,8 @@ namespace tendril::rl {
 //   checkpoint_freq: 100000        # environment steps between checkpoints; 0: none
 //   save_replay_buffer: false      # off-policy: keep the replay buffer with the checkpoint
 //   output: runs/ppo_pendulum      # where new runs go (a timestamp is appended)
+//   warm_start: runs/beam/case2    # start from another run's learned state (its newest
+//                                  # checkpoint, or a checkpoint file; Algorithm::warm_start)
 //
 // Every key is checked: unknown keys and wrong types raise Error naming the key path.
 struct Experiment {
@@ -64,6 +66,9 @@ struct Experiment {
   int64_t checkpoint_freq = 0;
   bool save_replay_buffer = false;
   std::string output;
+  // The checkpoint a new run starts from (a run directory given in the file is resolved to its
+  // newest intact checkpoint, and config records that file); empty: from scratch.
+  std::string warm_start;
 
   // Reads and validates every key, including the algorithm's and the environment's (by
   // building them once), so a bad file fails before anything is written.

@@ -118,7 +118,12 @@ class Run {
     if (companion_) companion_->bind(*algorithm_);
     fs::create_directories(directory_ / "checkpoints");
     const std::string identity = run_identity(directory_);
-    if (resuming) restore_newest_usable(identity);
+    if (resuming) {
+      restore_newest_usable(identity);
+    } else if (!experiment_.warm_start.empty()) {
+      algorithm_->warm_start(experiment_.warm_start);
+      log::info("warm start from ", experiment_.warm_start);
+    }
     const int64_t first_step = algorithm_->num_timesteps();
     log_.emplace(directory_, resuming, first_step);
     evaluation_.emplace(experiment_, directory_, *algorithm_, *env_, resuming);
@@ -313,6 +318,9 @@ TrainResult train(const Experiment& experiment, const fs::path& run_directory,
   const std::string where = run_directory.string();
   require_checkpoints_for_pause(experiment, options);
   require(!run_directory.empty(), "the run directory needs a name", "--out");
+  require(experiment.warm_start.empty() || fs::is_regular_file(experiment.warm_start),
+          "no checkpoint file " + experiment.warm_start + " to start from",
+          experiment.config.source() + ": warm_start");
   std::error_code error;
   fs::create_directories(run_directory, error);
   if (error || !fs::is_directory(run_directory)) {

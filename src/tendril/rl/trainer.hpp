@@ -17,7 +17,8 @@ namespace tendril::rl {
 //   progress.csv      one row per iteration, Stable-Baselines3's column names
 //   events.out.tfevents.*   the same scalars for TensorBoard
 //   eval.csv          evaluation returns every `eval.freq` steps and at the end
-//   checkpoints/step_<N>.ckpt   everything needed to resume, every `checkpoint_freq` steps
+//   checkpoints/step_<N>.ckpt   everything needed to resume, every `checkpoint_freq` steps and
+//                     at the end (the source of a warm start)
 //   model.policy      the final policy (rl::load_policy; acts on raw observations)
 //   best_model.policy with eval.save_best: the policy of the best evaluation (highest mean
 //                     return; the latest of equals, which has trained longest)

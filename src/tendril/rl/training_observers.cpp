@@ -237,7 +237,12 @@ CheckpointObserver::CheckpointObserver(const Experiment& experiment, const fs::p
 bool CheckpointObserver::on_iteration(const Progress& progress) {
   const int64_t previous = last_timesteps_;
   last_timesteps_ = progress.timesteps;
-  if (progress.timesteps >= experiment_.n_timesteps) return true;  // the run ends now anyway
+  if (progress.timesteps >= experiment_.n_timesteps) {
+    // The run ends now. Its final state is kept beside the others, for a warm start of another
+    // run (Algorithm::warm_start); a finished run is never resumed.
+    if (experiment_.checkpoint_freq > 0) save(progress.timesteps);
+    return true;
+  }
   const bool due = crossed(experiment_.checkpoint_freq, previous, progress.timesteps);
   if (const int signal = interrupt_signal(); signal != 0) {
     save(progress.timesteps);
