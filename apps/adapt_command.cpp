@@ -23,6 +23,7 @@
 #include "tendril/core/file_kind.hpp"
 #include "tendril/core/interrupt.hpp"
 #include "tendril/core/run_lock.hpp"
+#include "tendril/core/run_record.hpp"
 #include "tendril/rl/policy.hpp"
 
 namespace tendril::apps {
@@ -145,7 +146,7 @@ void claim_output(const fs::path& output, const std::string& resolved) {
   if (fs::exists(output) && !fs::is_empty(output)) {
     require(fs::exists(config_file),
             "exists and is not an adaptation output; nothing is overwritten", output.string());
-    require(file_text(config_file) == resolved,
+    require(read_run_config_text(output) == resolved,
             "holds an adaptation of another configuration (its config.yaml differs); nothing is "
             "overwritten: choose another output",
             output.string());
@@ -153,7 +154,7 @@ void claim_output(const fs::path& output, const std::string& resolved) {
     return;
   }
   fs::create_directories(output);
-  write_file_atomically(config_file, resolved, "adaptation config");
+  write_run_record(output, resolved);
 }
 
 }  // namespace

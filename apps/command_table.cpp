@@ -277,7 +277,8 @@ std::vector<CommandSpec> command_table() {
       .min_positionals = 1,
       .max_positionals = 1,
       .summary = "Fit a learned dynamics model to a prepared data set; write its run directory.",
-      .description = "The run directory holds config.yaml, progress.csv (train/loss, "
+      .description = "The run directory holds config.yaml (every key resolved, checksummed), "
+                     "machine.yaml, progress.csv (train/loss, "
                      "train/val_loss per epoch), TensorBoard events, model.tdm and "
                      "evaluation.csv (one-step and rollout RMSE on the test split). Ctrl-C (or "
                      "SIGTERM) stops at the end of the epoch with a checkpoint; `tendril resume "
@@ -393,7 +394,8 @@ std::vector<CommandSpec> command_table() {
       .summary = "Adapt trained policies online on the pneumatic arm (seed 002: BOAC or GPRCA).",
       .description =
           "Every goal × damage scenario × seed of the file, with per-trial logs and summary.csv "
-          "(Table II's parameters P1–P5). Ctrl-C (or SIGTERM) stops after the current "
+          "(Table II's parameters P1–P5), beside config.yaml (resolved, checksummed) and "
+          "machine.yaml. Ctrl-C (or SIGTERM) stops after the current "
           "adaptation; the same command continues, keeping the adaptations written (each is "
           "seeded on its own, so the result is the uninterrupted one's). An existing output of "
           "another configuration, or that is no adaptation's, is refused: nothing is overwritten.",

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "tendril/core/error.hpp"
+#include "tendril/core/run_record.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/trainer.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -16,10 +17,9 @@ namespace fs = std::filesystem;
 
 RunPolicy open_run_policy(const fs::path& run, bool best,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
-  require(fs::exists(run / "config.yaml"), "not a run directory (no config.yaml)", run.string());
 #ifdef TENDRIL_WITH_SAFETY
   // A safety co-training or constrained run: its task experiment (what its model.policy acts in).
-  Config config = Config::load_file(run / "config.yaml");
+  Config config = load_run_config(run);
   const bool safety_run = config.has("safety") || config.has("constrained");
   for (const auto& [key, value] : overrides) config.set(key, value);
   RunPolicy result{safety_run ? safety::task_experiment_of_config(config)

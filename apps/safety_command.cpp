@@ -16,6 +16,7 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
+#include "tendril/core/run_record.hpp"
 #include "tendril/safety/constrained_experiment.hpp"
 #include "tendril/safety/diamond_deployment.hpp"
 #include "tendril/safety/run_epsilon_search.hpp"
@@ -132,7 +133,7 @@ int safety_eval_command(const Arguments& line) {
   int default_episodes = 100;
   double default_epsilon = 0.0;
   const uint64_t default_seed = safety::task_experiment_of_run(run).seed;
-  const Config config = Config::load_file(run / "config.yaml");
+  const Config config = load_run_config(run);
   if (config.has("safety")) {
     const safety::SafetyExperiment experiment = safety::SafetyExperiment::from_config(config);
     default_episodes = experiment.eval_episodes;

@@ -9,6 +9,7 @@
 #include "tendril/core/error.hpp"
 #include "tendril/core/file_kind.hpp"
 #include "tendril/core/run_lock.hpp"
+#include "tendril/core/run_record.hpp"
 #include "tendril/core/scalar_log.hpp"
 #include "tendril/dynamics/evaluation_progress.hpp"
 #include "tendril/dynamics/model.hpp"
@@ -153,7 +154,7 @@ FitResult fit(const FitExperiment& e, const fs::path& run_directory, bool quiet,
             "Ctrl-C or SIGTERM; a finished fit has none)",
             run_directory.string());
   } else {
-    write_file_atomically(run_directory / "config.yaml", e.config.dump(), "config");
+    write_run_record(run_directory, e.config.dump_resolved());
   }
   // Resuming drops log rows of epochs after the checkpoint (none, unless a kill came later).
   ScalarLog log(run_directory, resuming,
@@ -211,10 +212,7 @@ bool is_stopped_fit(const fs::path& run_directory) {
 }
 
 FitResult resume_fit(const fs::path& run_directory, bool quiet) {
-  const fs::path config_file = run_directory / "config.yaml";
-  require(fs::exists(config_file), "is not a fit's run directory (no config.yaml)",
-          run_directory.string());
-  return fit(FitExperiment::from_config(Config::load_file(config_file)), run_directory, quiet,
+  return fit(FitExperiment::from_config(load_run_config(run_directory)), run_directory, quiet,
              /*resuming=*/true);
 }
 

@@ -16,8 +16,8 @@
 #include "tendril/core/crc32c.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/log.hpp"
-#include "tendril/core/numerics_mode.hpp"
 #include "tendril/core/run_lock.hpp"
+#include "tendril/core/run_record.hpp"
 #include "tendril/rl/replay_buffer.hpp"
 #include "tendril/rl/training_observers.hpp"
 
@@ -62,15 +62,6 @@ void remove_leftovers(const fs::path& directory) {
       fs::remove(file);
     }
   }
-}
-
-// config.yaml ends with a YAML comment holding the CRC-32C of the lines above it, so a damaged
-// or edited copy is refused before a resume or an evaluation uses another experiment than the
-// checkpoints beside it were trained with.
-constexpr std::string_view kChecksumLine = "# CRC-32C of the lines above: ";
-
-std::string with_checksum(const std::string& text) {
-  return text + std::string(kChecksumLine) + checksum_text(crc32c(text.data(), text.size())) + "\n";
 }
 
 // What ties a run's checkpoints to it: the checksum of its config.yaml (experiment and seed).
@@ -342,10 +333,7 @@ TrainResult train(const Experiment& experiment, const fs::path& run_directory,
     }
   }
   remove_leftovers(run_directory);
-  write_file_atomically(run_directory / "config.yaml", with_checksum(config_text), "config.yaml");
-  // Which build and CPU started the run: what decides whether a rerun is bit-identical
-  // (docs/reproducibility.md).
-  write_file_atomically(run_directory / "machine.yaml", machine_record(), "machine.yaml");
+  write_run_record(run_directory, config_text);
   return run(experiment, run_directory, options, std::move(lock), /*resuming=*/false);
 }
 
@@ -356,20 +344,7 @@ Experiment load_run_experiment(const fs::path& run_directory,
 
 Config load_run_config(const fs::path& run_directory,
                        const std::vector<std::pair<std::string, std::string>>& overrides) {
-  const fs::path file = run_directory / "config.yaml";
-  require(fs::exists(file), "not a run directory (no config.yaml)", run_directory.string());
-  Config config = Config::load_file(file);  // bounded, and refuses what is not a file
-  std::ifstream in(file, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::size_t at = text.rfind(kChecksumLine);
-  if (at != std::string::npos && (at == 0 || text[at - 1] == '\n')) {
-    if (with_checksum(text.substr(0, at)) != text) {
-      throw Error(
-          "damaged or edited since the run started (its checksum line does not match); "
-          "the checkpoints beside it belong to the experiment it held",
-          file.string());
-    }
-  }
+  Config config = tendril::load_run_config(run_directory);
   for (const auto& [key, value] : overrides) config.set(key, value);
   return config;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tendril/core/error.hpp"
+#include "tendril/core/run_record.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/runner/policy_runner.hpp"
 #include "tendril/rl/policy.hpp"
@@ -99,10 +100,7 @@ rl::Experiment task_experiment_of_config(const Config& config) {
 }
 
 rl::Experiment task_experiment_of_run(const std::filesystem::path& run_directory) {
-  const std::filesystem::path file = run_directory / "config.yaml";
-  require(std::filesystem::exists(file), "not a run directory (no config.yaml)",
-          run_directory.string());
-  const Config config = Config::load_file(file);
+  const Config config = load_run_config(run_directory);
   if (config.has("safety") || config.has("constrained")) return task_experiment_of_config(config);
   return rl::load_run_experiment(run_directory);
 }
