@@ -97,6 +97,7 @@ RodPool::RodPool(const Rod& prototype, int count) : model_(prototype.model()), c
 
   const int blocks = (count + kRodLanes - 1) / kRodLanes;
   blocks_.resize(blocks);
+  stopped_.resize(model_);
   for (RodLanes& lanes : blocks_) {
     lanes.resize(model_);
     // Lanes past the last rod carry the prototype too, so that they compute finite values.
@@ -178,8 +179,13 @@ void RodPool::step_block(int block, int steps) {
   }
   if (!any_live) return;
   // Stopped rods compute along with the others and get their values back afterwards.
-  RodLanes stopped;
-  if (any_stopped) stopped = lanes;
+  if (any_stopped) {
+    stopped_.positions = lanes.positions;
+    stopped_.velocities = lanes.velocities;
+    stopped_.directors = lanes.directors;
+    stopped_.angular_velocities = lanes.angular_velocities;
+    stopped_.time = lanes.time;
+  }
 
   const double dt = model_.time_step;
   lanes_kinematic_step(model_, lanes, 0.5 * dt, live);
@@ -211,11 +217,11 @@ void RodPool::step_block(int block, int steps) {
     if (live[l]) {
       finite_[rod] = finite[l];
     } else if (rod < count_) {
-      lanes.positions.row(l) = stopped.positions.row(l);
-      lanes.velocities.row(l) = stopped.velocities.row(l);
-      lanes.directors.row(l) = stopped.directors.row(l);
-      lanes.angular_velocities.row(l) = stopped.angular_velocities.row(l);
-      lanes.time.row(l) = stopped.time.row(l);
+      lanes.positions.row(l) = stopped_.positions.row(l);
+      lanes.velocities.row(l) = stopped_.velocities.row(l);
+      lanes.directors.row(l) = stopped_.directors.row(l);
+      lanes.angular_velocities.row(l) = stopped_.angular_velocities.row(l);
+      lanes.time.row(l) = stopped_.time.row(l);
     }
   }
 }

@@ -18,7 +18,9 @@ namespace tendril::physics {
 //
 // Every rod reproduces, bit for bit, the positions, velocities, directors and angular
 // velocities that a lone Rod built like the prototype would have after the same advance calls
-// (Rod merges the half kinematic steps within one call, so the calls must match too).
+// (Rod merges the half kinematic steps within one call, so the calls must match too): each
+// lane's arithmetic is Rod's, expression for expression (rod_lanes.hpp), and rod_pool_test
+// checks the equality under the build's compiler settings. Advancing allocates nothing.
 //
 // Parts mirrored (of the prototype, in its attachment order within each stage):
 //   FixedEnd, InternalDamping, AnalyticalLinearDamping, Gravity, EndForces (one set of
@@ -99,6 +101,7 @@ class RodPool {
   std::vector<SplineActuation> muscles_;  // one per rod; empty without muscles
   bool muscles_rate_limited_ = false;
   RodState scratch_;  // what SplineActuation::start_step is handed (it reads nothing of it)
+  RodLanes stopped_;  // the values of stopped rods while their block advances
 };
 
 }  // namespace tendril::physics
