@@ -8,9 +8,9 @@
 
 namespace tendril::physics {
 
-// Rods of one model side by side in a RodPool: kRodLanes of them per block, so that one block's
-// arrays stay in the first-level cache and every loop over the lanes is one or two vector
-// instructions wide.
+// Rods of one model side by side in a RodPool: kRodLanes of them per block, so that every loop
+// over the lanes is one or two vector instructions wide and one block's arrays stay in the
+// core's second-level cache (74 kB for the 20-element arm).
 constexpr int kRodLanes = 8;
 
 // Per-node or per-element quantities of kRodLanes rods, the rod index innermost: column
