@@ -1,5 +1,6 @@
 #include "tendril/physics/rod/rod_lanes.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tendril/physics/rod/rotation.hpp"
