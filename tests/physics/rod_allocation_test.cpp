@@ -4,9 +4,11 @@
 
 #include <atomic>
 #include <cstddef>
+#include <limits>
 
 #include "tendril/physics/arms/elastica_arm.hpp"
 #include "tendril/physics/rod/damping.hpp"
+#include "tendril/physics/rod/rod_pool.hpp"
 
 namespace {
 std::atomic<long> allocations{0};
@@ -94,6 +96,29 @@ TEST(RodAllocation, ImplicitArmsActWithoutAllocating) {
     EXPECT_EQ(allocations_while_acting(case3, 50, 1, 0.6, 0.3), 0) << integrator_name(integrator);
     EXPECT_GT(case3.contact->contacts(), 0) << "the arm should be touching the wall";
   }
+}
+
+// Eleven case-1 arms in a RodPool (a full block and a partial one), with rate-limited muscles
+// and one rod stopped by a non-finite state: commanding and advancing them allocates nothing.
+TEST(RodAllocation, RodPoolActsWithoutAllocating) {
+  ElasticaArmSpec spec = ElasticaArmSpec::tracking();
+  spec.actuation.max_change_per_step = 0.01;
+  const ElasticaArm prototype = build_elastica_arm(spec);
+  RodPool pool(prototype.rod, 11);
+  RodState stopped = prototype.rod.state();
+  stopped.velocities(0, 3) = std::numeric_limits<double>::quiet_NaN();
+  pool.set_state(7, stopped);
+  Eigen::VectorXd targets(spec.actuation.action_size());
+  const long before = allocations.load();
+  for (int a = 0; a < 50; ++a) {
+    for (int r = 0; r < pool.size(); ++r) {
+      for (Eigen::Index k = 0; k < targets.size(); ++k) targets[k] = 0.3 * ((a + k + r) % 3 - 1);
+      pool.set_targets(r, targets);
+    }
+    EXPECT_FALSE(pool.advance(7));
+  }
+  EXPECT_EQ(allocations.load() - before, 0);
+  EXPECT_TRUE(pool.is_finite(6) && !pool.is_finite(7));
 }
 
 }  // namespace

@@ -13,6 +13,8 @@ class Gravity final : public RodPart {
   uint32_t stages() const override { return kLoads; }
   void add_loads(const RodModel& model, RodState& state) override;
 
+  const Eigen::Vector3d& acceleration() const { return acceleration_; }
+
  private:
   Eigen::Vector3d acceleration_;
 };
@@ -27,6 +29,9 @@ class EndForces final : public RodPart {
   void add_loads(const RodModel& model, RodState& state) override;
 
   void set_end_force(const Eigen::Vector3d& force) { end_force_ = force; }
+  const Eigen::Vector3d& start_force() const { return start_force_; }
+  const Eigen::Vector3d& end_force() const { return end_force_; }
+  double ramp_time() const { return ramp_time_; }
 
  private:
   Eigen::Vector3d start_force_, end_force_;

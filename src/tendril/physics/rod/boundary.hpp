@@ -20,6 +20,10 @@ class FixedEnd final : public RodPart {
   void constrain_rates(const RodModel& model, RodState& state) override;
   void fix_rates(const RodModel& model, RodJacobian& jacobian) const override;
 
+  // The held values (those captured at attach time unless given).
+  const Eigen::Vector3d& position() const { return position_; }
+  const Eigen::Matrix3d& directors() const { return directors_; }
+
  private:
   bool given_ = false;
   Eigen::Vector3d position_ = Eigen::Vector3d::Zero();

@@ -19,6 +19,8 @@ class InternalDamping final : public RodPart {
   void add_load_derivatives(const RodModel& model, const RodState& state,
                             RodJacobian& jacobian) const override;
 
+  double coefficient() const { return coefficient_; }
+
  private:
   double coefficient_;
 };
@@ -37,6 +39,11 @@ class AnalyticalLinearDamping final : public RodPart {
   void add_damping_loads(const RodModel& model, RodState& state) override;
   void add_load_derivatives(const RodModel& model, const RodState& state,
                             RodJacobian& jacobian) const override;
+
+  // What damp_rates multiplies the rates by each step (after attach): per node, and per
+  // element and material axis.
+  const Eigen::VectorXd& velocity_factors() const { return velocity_factors_; }
+  const Vectors& angular_factors() const { return angular_factors_; }
 
  private:
   double translational_, rotational_;

@@ -57,6 +57,8 @@ class Rod {
     return reference;
   }
   void attach(std::unique_ptr<RodPart> part);
+  // The attached parts in attachment order (e.g. for a RodPool to mirror them).
+  const std::vector<std::unique_ptr<RodPart>>& parts() const { return parts_; }
 
   // Advances `steps` time steps. Returns false if the state became non-finite (NaN or ∞); the
   // rod then stops advancing and keeps returning false until its state is set anew. An implicit
