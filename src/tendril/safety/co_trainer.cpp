@@ -9,7 +9,8 @@
 
 namespace tendril::safety {
 
-SafetyCoTrainer::SafetyCoTrainer(rl::OffPolicyAlgorithm& safety_agent, const Constraint& constraint,
+SafetyCoTrainer::SafetyCoTrainer(rl::OffPolicyAlgorithm& safety_agent,
+                                 const envs::SafetyConstraint& constraint,
                                  const SafetyReward& reward, const CoTrainingSettings& settings,
                                  int64_t total_timesteps, uint64_t seed)
     : agent_(safety_agent),

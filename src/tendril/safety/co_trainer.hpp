@@ -40,7 +40,7 @@ struct CoTrainingSettings {
 // is exactly that value (for every action, as V* is action-independent there).
 class SafetyCoTrainer : public rl::Observer {
  public:
-  SafetyCoTrainer(rl::OffPolicyAlgorithm& safety_agent, const Constraint& constraint,
+  SafetyCoTrainer(rl::OffPolicyAlgorithm& safety_agent, const envs::SafetyConstraint& constraint,
                   const SafetyReward& reward, const CoTrainingSettings& settings,
                   int64_t total_timesteps, uint64_t seed);
 
@@ -69,7 +69,7 @@ class SafetyCoTrainer : public rl::Observer {
 
   rl::OffPolicyAlgorithm& agent_;
   const FilteredVecEnv* filtered_env_ = nullptr;
-  const Constraint& constraint_;
+  const envs::SafetyConstraint& constraint_;
   SafetyReward reward_;
   CoTrainingSettings settings_;
   int64_t total_timesteps_;

@@ -3,32 +3,12 @@
 #include <memory>
 
 #include "tendril/core/env.hpp"
-#include "tendril/core/rng.hpp"
+#include "tendril/envs/safety_constraint.hpp"
 
 namespace tendril::safety {
 
-// The unsafe set of an environment as the safety agent sees it, from observations alone (seed
-// 001 eq. 6.4): the signed distance d to X_unsafe (unsafe where d ≤ 0), its maximum over the
-// safe set, the episode time t held in the observation, and draws of unsafe observations for
-// the supervised loss (eq. 6.6). Observations are the environment's raw ones (no VecNormalize).
-class Constraint {
- public:
-  virtual ~Constraint() = default;
-
-  virtual double margin(const Observation& observation) const = 0;
-  virtual double max_margin() const = 0;
-  // The time step t of the observation within its episode.
-  virtual int64_t time_step(const Observation& observation) const = 0;
-  virtual int64_t horizon() const = 0;
-  // An observation uniformly drawn over the absolute bounds (time uniform over the episode),
-  // redrawn until it is unsafe.
-  virtual Observation sample_unsafe(Rng& rng) const = 0;
-
-  bool unsafe(const Observation& observation) const { return margin(observation) <= 0.0; }
-};
-
-// The constraint of a safe-control environment (envs/safe_control/), found through any
-// wrappers: raises Error for an environment without one.
-std::unique_ptr<Constraint> constraint_of(Env& env);
+// The constraint of an environment whose task is a SafetyTask (envs/safety_task.hpp), found
+// through any wrappers: raises Error for an environment without one.
+std::unique_ptr<envs::SafetyConstraint> constraint_of(Env& env);
 
 }  // namespace tendril::safety

@@ -8,7 +8,7 @@
 namespace tendril::safety {
 
 // Algorithm 3 (seed 001 §6.3.2) on a co-training run's safety critic: states are the
-// environment's SearchSpace (normalized units), V_safe(s) the critic's state value of the
+// environment's SafetySearchSpace (normalized units), V_safe(s) the critic's state value of the
 // observation of s at t = 0, ∇V by central differences (step `gradient_step` in normalized
 // units; the SAC critic's V goes through its actor), and an episode is the safety policy's
 // greedy rollout from s, whose length counts the steps before the first unsafe state (T_max =

@@ -38,7 +38,8 @@ class ActorPolicy final : public Policy {
 // trajectory when asked for.
 class SafetyObserver final : public envs::RunObserver {
  public:
-  SafetyObserver(const Constraint& constraint, std::vector<std::vector<double>>* trajectory)
+  SafetyObserver(const envs::SafetyConstraint& constraint,
+                 std::vector<std::vector<double>>* trajectory)
       : constraint_(constraint), trajectory_(trajectory) {}
 
   void on_episode_start(int64_t /*episode*/, uint64_t /*seed*/, const Observation& observation,
@@ -63,7 +64,7 @@ class SafetyObserver final : public envs::RunObserver {
   int safe() const { return safe_; }
 
  private:
-  const Constraint& constraint_;
+  const envs::SafetyConstraint& constraint_;
   std::vector<std::vector<double>>* trajectory_;
   bool violated_ = false;
   int safe_ = 0;
@@ -71,8 +72,8 @@ class SafetyObserver final : public envs::RunObserver {
 
 }  // namespace
 
-SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
-                                 int episodes, uint64_t seed,
+SafetyEvaluation evaluate_safety(Env& env, const envs::SafetyConstraint& constraint,
+                                 const TaskActor& actor, int episodes, uint64_t seed,
                                  std::vector<std::vector<double>>* trajectory) {
   require(episodes >= 1, "at least one episode", "evaluate_safety");
   SafetyObserver observer(constraint, trajectory);

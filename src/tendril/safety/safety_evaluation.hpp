@@ -24,8 +24,8 @@ struct SafetyEvaluation {
 };
 // With `trajectory`, every step is appended as a row [episode, t, x..., u..., unsafe(x')], x the
 // observation acted on and u the action taken.
-SafetyEvaluation evaluate_safety(Env& env, const Constraint& constraint, const TaskActor& actor,
-                                 int episodes, uint64_t seed,
+SafetyEvaluation evaluate_safety(Env& env, const envs::SafetyConstraint& constraint,
+                                 const TaskActor& actor, int episodes, uint64_t seed,
                                  std::vector<std::vector<double>>* trajectory = nullptr);
 
 // The task experiment of a training config, read as its command reads it: a co-training

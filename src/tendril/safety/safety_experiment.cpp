@@ -159,7 +159,7 @@ class SafetyCoTraining : public rl::RunCompanion {
   const SafetyExperiment& experiment_;
   std::unique_ptr<rl::Algorithm> agent_;
   std::unique_ptr<Env> single_;
-  std::unique_ptr<Constraint> constraint_;
+  std::unique_ptr<envs::SafetyConstraint> constraint_;
   std::optional<SafetyCoTrainer> co_trainer_;
   std::unique_ptr<SafetyCritic> live_critic_;
   Rng filter_rng_;

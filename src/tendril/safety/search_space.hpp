@@ -1,45 +1,16 @@
 #pragma once
 
-#include <Eigen/Core>
 #include <memory>
-#include <optional>
-#include <string>
-#include <vector>
 
 #include "tendril/core/env.hpp"
-#include "tendril/core/rng.hpp"
+#include "tendril/envs/safety_search_space.hpp"
 
 namespace tendril::safety {
 
-// The states Algorithm 3 (seed 001 §6.3.2) and the value maps of Figs. 6.4 and 6.6 move
-// through, for one environment: a vector s of the physical state in normalized units (each
-// coordinate over its scale, e.g. the safe bound), the observation of s at the start of an
-// episode (t = 0), and placing an environment in s to roll a policy out from it.
-class SearchSpace {
- public:
-  virtual ~SearchSpace() = default;
-
-  // Coordinate names and the physical value of one normalized unit of each.
-  virtual const std::vector<std::string>& names() const = 0;
-  virtual const Eigen::VectorXd& scales() const = 0;
-  int dimension() const { return static_cast<int>(names().size()); }
-
-  virtual Observation observation(const Eigen::VectorXd& state) const = 0;
-  // Puts `env` (this space's environment, through any wrappers, just reset) in `state` at t = 0.
-  virtual void place(Env& env, const Eigen::VectorXd& state) const = 0;
-  // A state drawn uniformly over the safe box.
-  virtual Eigen::VectorXd sample(Rng& rng) const = 0;
-  // Whether `state` lies in the analytic safe set, where one is known (the double integrator's
-  // viability kernel); nullopt elsewhere.
-  virtual std::optional<bool> analytically_safe(const Eigen::VectorXd& /*state*/) const {
-    return std::nullopt;
-  }
-};
-
-// The search space of a safe-control environment (envs/safe_control/), found through any
-// wrappers: the double integrator's (x, ẋ) over (2 m, 3 m/s), the Dubins car's (x, y, ψ) over
-// (2 m, 2 m, π rad) with the default geometry, the limb safety task's (θx, θy, θ̇x, θ̇y) over its
-// safe radius (30° and 30 °/s). Raises Error for other environments.
-std::unique_ptr<SearchSpace> search_space_of(Env& env);
+// The search space of an environment whose task is a SafetyTask (envs/safety_task.hpp), found
+// through any wrappers: the double integrator's (x, ẋ) over (2 m, 3 m/s), the Dubins car's
+// (x, y, ψ) over (2 m, 2 m, π rad) with the default geometry, the limb safety task's (θx, θy,
+// θ̇x, θ̇y) over its safe radius (30° and 30 °/s). Raises Error for other environments.
+std::unique_ptr<envs::SafetySearchSpace> search_space_of(Env& env);
 
 }  // namespace tendril::safety

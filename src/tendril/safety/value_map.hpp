@@ -8,7 +8,7 @@
 
 namespace tendril::safety {
 
-// A co-training run's learned safety value over a grid of two coordinates of its SearchSpace,
+// A co-training run's learned safety value over a grid of two coordinates of its SafetySearchSpace,
 // the others held fixed (seed 001 Fig. 6.4: the double integrator's (x, ẋ) plane; Fig. 6.6: the
 // limb's (θx, θy) with zero velocities): V_safe at t = 0, the safety policy's action and, where
 // the environment has one, whether the state lies in the analytic safe set.

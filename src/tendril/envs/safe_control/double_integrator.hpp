@@ -8,6 +8,7 @@
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/env_description.hpp"
+#include "tendril/envs/safety_task.hpp"
 
 namespace tendril::envs::safe_control {
 
@@ -29,7 +30,7 @@ namespace tendril::envs::safe_control {
 // Values the thesis leaves open (dt, T, start states) follow the labelled suggestions of the
 // seed's extraction and live in the config: dt = 0.05 s, T = 200 steps, starts uniform in the
 // safe box.
-class DoubleIntegrator : public Env {
+class DoubleIntegrator : public Env, public SafetyTask {
  public:
   static constexpr const char* kId = "Safety/DoubleIntegrator-v0";
 
@@ -68,6 +69,10 @@ class DoubleIntegrator : public Env {
   void load_state(SnapshotReader& in) override;
 
   const Params& params() const { return params_; }
+  // SafetyTask: the constraint and search space of the safety filter (double_integrator_safety.cpp:
+  // observation [x, ẋ, t/T]; states (x, ẋ) over the safe bounds).
+  std::unique_ptr<SafetyConstraint> safety_constraint() const override;
+  std::unique_ptr<SafetySearchSpace> safety_search_space() const override;
   void set_state(double position, double velocity, int elapsed_steps = 0);
   double position() const { return position_; }
   double velocity() const { return velocity_; }

@@ -8,6 +8,7 @@
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/env_description.hpp"
+#include "tendril/envs/safety_task.hpp"
 
 namespace tendril::envs::safe_control {
 
@@ -36,7 +37,7 @@ namespace tendril::envs::safe_control {
 // set is a thin orbit; with a speed input the car can stop, every safe state is recoverable, and
 // a filter that keeps stopping short of the disc can deadlock against the task — the conflict
 // the thesis' discussion (§6.6) names.
-class DubinsCar : public Env {
+class DubinsCar : public Env, public SafetyTask {
  public:
   static constexpr const char* kId = "Safety/DubinsCar-v0";
 
@@ -85,6 +86,10 @@ class DubinsCar : public Env {
   void load_state(SnapshotReader& in) override;
 
   const Params& params() const { return params_; }
+  // SafetyTask: the constraint and search space of the safety filter (dubins_car_safety.cpp: states
+  // (x, y, ψ) over (box, box, π)).
+  std::unique_ptr<SafetyConstraint> safety_constraint() const override;
+  std::unique_ptr<SafetySearchSpace> safety_search_space() const override;
   void set_state(double x, double y, double heading, int elapsed_steps = 0);
   Eigen::Vector3d state() const { return {x_, y_, heading_}; }
   double turn_rate(const Action& action) const;

@@ -11,6 +11,7 @@
 #include "tendril/envs/env_description.hpp"
 #include "tendril/envs/learned/dynamics_model.hpp"
 #include "tendril/envs/learned/history_windows.hpp"
+#include "tendril/envs/safety_task.hpp"
 
 namespace tendril::envs::sma_limb {
 
@@ -33,7 +34,7 @@ namespace tendril::envs::sma_limb {
 // torch-free stand-in for tests), seed, safe_radius (30°), start_velocity (30 °/s),
 // velocity_limit (100 °/s), horizon (T, 500 steps as the author's code), terminate_on_unsafe
 // (true).
-class LearnedSafetyEnv : public Env {
+class LearnedSafetyEnv : public Env, public SafetyTask {
  public:
   static constexpr const char* kId = "SmaLimb/LearnedSafety-v0";
   static constexpr double kThrottle = 10.0;
@@ -61,6 +62,10 @@ class LearnedSafetyEnv : public Env {
   void load_state(SnapshotReader& in) override;
 
   const Params& params() const { return params_; }
+  // SafetyTask: the constraint and search space of the safety filter
+  // (learned_safety_env_safety.cpp: states (θx, θy, θ̇x, θ̇y) over the safe radius).
+  std::unique_ptr<SafetyConstraint> safety_constraint() const override;
+  std::unique_ptr<SafetySearchSpace> safety_search_space() const override;
   // The throttles (u_x, u_y) of action index 0–3.
   static Eigen::Vector2d throttles(int action);
   // d of eq. (6.4): R − ‖θ‖ in degrees.
