@@ -17,13 +17,14 @@
 #include "tendril/adapt/adapt_config.hpp"
 #include "tendril/adapt/boac.hpp"
 #include "tendril/adapt/gprca_trials.hpp"
-#include "tendril/adapt/pneumatic_reaching_robot.hpp"
+#include "tendril/adapt/task_reaching_robot.hpp"
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/file_kind.hpp"
 #include "tendril/core/interrupt.hpp"
 #include "tendril/core/run_lock.hpp"
 #include "tendril/core/run_record.hpp"
+#include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/rl/policy.hpp"
 
 namespace tendril::apps {
@@ -233,13 +234,14 @@ int adapt_command(const Arguments& line) {
             assembled({&task}, {{"robot", &robot}}, config.source() + " (task, robot)");
         robot_params.set("task", goal);
         robot_params.set("robot.scenario", scenario);
-        auto arm = adapt::PneumaticReachingRobot::on_robot(robot_params);
+        auto arm = std::make_unique<adapt::TaskReachingRobot>(
+            envs::pneumatic::ReachEnv::create_on_robot(robot_params));
         robot_params.reject_unknown();
         adapt::AdaptationResult result;
         if (method == "gprca") {
           Config model_params = assembled({&task, &model}, {}, config.source() + " (task, model)");
           model_params.set("task", goal);
-          adapt::PneumaticHistoryModel history(model_params);
+          adapt::TaskHistoryModel history(envs::pneumatic::ReachEnv::create_on_model(model_params));
           model_params.reject_unknown();
           adapt::GprcaTrialsOptions options = gprca_options;
           options.steps_per_trial = steps_for(gprca_config, scenario);
@@ -247,7 +249,8 @@ int adapt_command(const Arguments& line) {
         } else {
           Config model_params = assembled({&task, &model}, {}, config.source() + " (task, model)");
           model_params.set("task", goal);
-          auto coach_arm = adapt::PneumaticReachingRobot::on_model(model_params);
+          auto coach_arm = std::make_unique<adapt::TaskReachingRobot>(
+              envs::pneumatic::ReachEnv::create_on_model(model_params));
           model_params.reject_unknown();
           result = adapt::run_boac(*arm, *coach_arm, *policy, boac_options, seed);
         }

@@ -8,9 +8,10 @@
 #include <cmath>
 
 #include "tendril/adapt/gprca_trials.hpp"
-#include "tendril/adapt/pneumatic_reaching_robot.hpp"
+#include "tendril/adapt/task_reaching_robot.hpp"
 #include "tendril/envs/pneumatic/arm_params.hpp"
 #include "tendril/envs/pneumatic/bridge_robot_env.hpp"
+#include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_env.hpp"
 #include "tendril/hardware/arm_emulator.hpp"
 #include "tendril/hardware/udp_transport.hpp"
@@ -95,18 +96,22 @@ class SteadyPolicy final : public rl::Policy {
 
 TEST(ArmHil, AGprcaTrialOnTheEmulatedLabEqualsTheTwins) {
   const std::string task = "observe_command: true\n";
-  auto twin_robot = adapt::PneumaticReachingRobot::on_robot(Config::parse(task));
+  auto twin_robot = std::make_unique<adapt::TaskReachingRobot>(
+      envs::pneumatic::ReachEnv::create_on_robot(Config::parse(task)));
   Lab lab(Config::parse("{}"));
   auto bridge_robot =
-      adapt::PneumaticReachingRobot::on_robot(Config::parse(task + "robot: " + lab.bridge_yaml()));
+      std::make_unique<adapt::TaskReachingRobot>(envs::pneumatic::ReachEnv::create_on_robot(
+          Config::parse(task + "robot: " + lab.bridge_yaml())));
   const SteadyPolicy policy(twin_robot->env().observation_space(),
                             twin_robot->env().action_space());
   adapt::GprcaTrialsOptions options;
   options.max_trials = 1;
   options.steps_per_trial = 40;
   options.search_between_trials = false;
-  adapt::PneumaticHistoryModel twin_model(Config::parse("{}"));
-  adapt::PneumaticHistoryModel bridge_model(Config::parse("{}"));
+  adapt::TaskHistoryModel twin_model(
+      envs::pneumatic::ReachEnv::create_on_model(Config::parse("{}")));
+  adapt::TaskHistoryModel bridge_model(
+      envs::pneumatic::ReachEnv::create_on_model(Config::parse("{}")));
   const adapt::AdaptationResult expected = run_gprca(*twin_robot, twin_model, policy, options, 2);
   const adapt::AdaptationResult got = run_gprca(*bridge_robot, bridge_model, policy, options, 2);
   ASSERT_EQ(got.steps.size(), expected.steps.size());

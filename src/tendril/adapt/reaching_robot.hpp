@@ -7,26 +7,21 @@
 #include <vector>
 
 #include "tendril/core/space.hpp"
+#include "tendril/envs/reach_command_task.hpp"
+#include "tendril/envs/robot_history_model.hpp"
 
 namespace tendril::adapt {
 
-// What the last reset or step of a ReachingRobot scored, on the raw (measured) state.
-struct ReachStatus {
-  double goal_distance = 0.0;      // task point to goal, the state's units (mm)
-  double obstacle_distance = 0.0;  // task point to the obstacle
-  double reward = 0.0;             // the task's reward for the step (0 after a reset)
-  bool success = false;            // within the task's success distance, no collision
-  bool collision = false;          // the step crossed or touched the obstacle (ends a trial)
-  bool outside = false;            // the task point is outside the boundary
-  bool rate_limited = false;       // the command's change was limited
-};
+// What the last reset or step of a ReachingRobot scored (envs/reach_command_task.hpp).
+using envs::ReachStatus;
 
 // A robot with a reaching task, as the online adaptation of seed 002 (BOAC §IV-B, GPRCA §IV-C)
 // drives it: states are the task-space positions the robot measures (the pneumatic arm: the
 // three module tips, mm), commands its normalised actuator inputs (the nine pressures as
 // a ∈ [−1, 1]⁹), and the trained policy (the oracle, π_θ) sees observations built from a state
-// and the held command. Implemented over the pneumatic arm's task on the robot interface
-// (PneumaticReachingRobot) and by scripted plants in tests.
+// and the held command. Implemented over any envs::ReachCommandTask (TaskReachingRobot: the
+// pneumatic arm's task on the robot interface or in its learned model) and by scripted plants
+// in tests.
 class ReachingRobot {
  public:
   virtual ~ReachingRobot() = default;
@@ -59,17 +54,7 @@ class ReachingRobot {
 };
 
 // The learned model of the robot fed the robot's real history (GPRCA's F_φ, seed 002 §IV-C,
-// Fig. 5), in the robot's state and command units.
-class RobotHistoryModel {
- public:
-  virtual ~RobotHistoryModel() = default;
-
-  // The history is the robot at rest in `state` (command at rest).
-  virtual void reset(const Eigen::VectorXd& state) = 0;
-  // x̂_{t+1} for `command` held from now, from the history; the history does not move.
-  virtual Eigen::VectorXd predict(const Eigen::VectorXd& command) = 0;
-  // Appends the measured x_{t+1} (answering the command of the last predict) to the history.
-  virtual void follow(const Eigen::VectorXd& state) = 0;
-};
+// Fig. 5; envs/robot_history_model.hpp).
+using envs::RobotHistoryModel;
 
 }  // namespace tendril::adapt

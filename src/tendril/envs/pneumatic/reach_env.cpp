@@ -50,9 +50,11 @@ ReachObservationSpec ReachObservationSpec::from_dataset(const PneumaticDataset& 
   return spec;
 }
 
-ReachEnv::ReachEnv(Setup setup, std::unique_ptr<ArmDynamics> dynamics)
+ReachEnv::ReachEnv(Setup setup, std::unique_ptr<ArmDynamics> dynamics,
+                   std::unique_ptr<RobotHistoryModel> history)
     : setup_(std::move(setup)),
       dynamics_(std::move(dynamics)),
+      history_(std::move(history)),
       observation_space_(Space::box(setup_.observation.size(),
                                     -std::numeric_limits<float>::infinity(),
                                     std::numeric_limits<float>::infinity())),

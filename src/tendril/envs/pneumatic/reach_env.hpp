@@ -3,12 +3,15 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
 #include "tendril/envs/env_description.hpp"
 #include "tendril/envs/pneumatic/arm_dynamics.hpp"
 #include "tendril/envs/pneumatic/reach_task.hpp"
+#include "tendril/envs/reach_command_task.hpp"
+#include "tendril/envs/robot_history_model.hpp"
 
 namespace tendril::envs::pneumatic {
 
@@ -49,7 +52,11 @@ struct ReachObservationSpec {
 // Info: "distance" (G_dist in m), "goal_distance_mm", "obstacle_distance_mm", "is_success",
 // "collision", "warning", "outside_boundary", "rate_limited", "nan". Episodes are cut by the
 // registry's time limit (150 steps, §IV-A3).
-class ReachEnv : public Env {
+//
+// As a ReachCommandTask (reach_env_command.cpp), for online adaptation: states are the 9 tip
+// coordinates (mm, robot frame), commands the 9 normalised pressures, the task point module 3's
+// tip; in a learned model, the model fed the arm's measured tips (model_history.hpp).
+class ReachEnv : public Env, public ReachCommandTask {
  public:
   struct Setup {
     std::string id;
@@ -87,7 +94,9 @@ class ReachEnv : public Env {
   static constexpr const char* kModelId = "PneumaticArm/LearnedReach-v0";
   static constexpr int64_t kEpisodeSteps = 150;
 
-  ReachEnv(Setup setup, std::unique_ptr<ArmDynamics> dynamics);
+  // `history`: the dynamics as a model fed measured history, where they are a learned model.
+  ReachEnv(Setup setup, std::unique_ptr<ArmDynamics> dynamics,
+           std::unique_ptr<RobotHistoryModel> history = nullptr);
 
   const Space& observation_space() const override { return observation_space_; }
   const Space& action_space() const override { return action_space_; }
@@ -116,6 +125,24 @@ class ReachEnv : public Env {
   double rate_limit() const { return setup_.rate_limit; }
   ArmDynamics& dynamics() { return *dynamics_; }
 
+  // ReachCommandTask.
+  int state_dim() const override { return 9; }
+  int command_dim() const override { return 9; }
+  // tip_m1_x_mm, …, tip_m3_z_mm
+  std::vector<std::string> state_names() const override;
+  ReachStatus reset_reach(std::optional<uint64_t> seed) override;
+  // step_command's rate limit and cap; Error for a non-finite arm.
+  ReachStatus hold_command(const Eigen::VectorXd& command) override;
+  Eigen::VectorXd measured_state() const override { return tips_; }
+  Eigen::VectorXd held_command() const override { return command_; }
+  Observation observation_at(const Eigen::VectorXd& state) const override;
+  // As step(): the delta added and capped, or not taken beyond the rate limit.
+  Eigen::VectorXd command_after(const Action& action) const override;
+  Eigen::Vector3d task_point(const Eigen::VectorXd& state) const override;
+  Eigen::Vector3d goal() const override { return setup_.task.goal; }
+  double success_distance() const override { return setup_.task.success_distance; }
+  RobotHistoryModel* history_model() override { return history_.get(); }
+
  private:
   Observation observe(const TipVector& tips, double goal_distance, double obstacle_distance) const;
   // Holds `command` (already capped) for one period and scores the step.
@@ -123,6 +150,7 @@ class ReachEnv : public Env {
 
   Setup setup_;
   std::unique_ptr<ArmDynamics> dynamics_;
+  std::unique_ptr<RobotHistoryModel> history_;  // refers to dynamics_: destroyed before it
   Space observation_space_, action_space_;
   ChamberVector command_ = ChamberVector::Constant(-1.0);
   TipVector tips_ = TipVector::Zero();

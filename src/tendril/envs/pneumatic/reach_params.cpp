@@ -7,6 +7,7 @@
 #include "tendril/envs/pneumatic/arm_params.hpp"
 #include "tendril/envs/pneumatic/linear_arm_model.hpp"
 #include "tendril/envs/pneumatic/model_dynamics.hpp"
+#include "tendril/envs/pneumatic/model_history.hpp"
 #include "tendril/envs/pneumatic/pneumatic_dataset.hpp"
 #include "tendril/envs/pneumatic/reach_env.hpp"
 #include "tendril/envs/pneumatic/robot_dynamics.hpp"
@@ -131,8 +132,9 @@ std::unique_ptr<Env> ReachEnv::create_on_model(const Config& params) {
   if (!(std::isfinite(jitter) && jitter >= 0.0)) {
     throw Error("must be finite and non-negative", key_where(params, "rest_jitter_mm"));
   }
-  return std::make_unique<ReachEnv>(
-      std::move(setup), std::make_unique<ModelDynamics>(std::move(model), rest, jitter));
+  auto dynamics = std::make_unique<ModelDynamics>(std::move(model), rest, jitter);
+  std::unique_ptr<RobotHistoryModel> history = model_history(*dynamics);
+  return std::make_unique<ReachEnv>(std::move(setup), std::move(dynamics), std::move(history));
 }
 
 namespace {
