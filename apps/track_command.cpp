@@ -19,6 +19,7 @@
 #include "tendril/control/tracking_loop.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/data/prepare.hpp"
+#include "tendril/envs/pushable_robot.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/sma_limb/policy_tracking_controller.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
@@ -140,9 +141,9 @@ int track_command(const Arguments& line) {
       if (push_n <= 0.0) return;
       const int due = pushes == 0 ? points / 4 : pushes == 1 ? 3 * points / 4 : points + 1;
       if (f.index() >= due) {
-        auto* robot = envs::find_wrapper<envs::sma_limb::SmaLimbEnv>(*env);
+        auto* robot = envs::find_wrapper<envs::PushableRobot>(*env);
         require(robot != nullptr, "the robot cannot be pushed", "tendril track --push");
-        robot->apply_push(Eigen::Vector2d(push_n, 0.0), 0.2);
+        robot->push_tip(push_n * Eigen::VectorXd::Unit(robot->push_dim(), 0), 0.2);
         ++pushes;
       }
     };

@@ -193,7 +193,9 @@ TEST(SmaLimbEnvCalibration, TheRestReadsZeroOnTheCommittedCalibration) {
 TEST(SmaLimbEnv, DescribesItsSceneAndCanBePushed) {
   SmaLimbEnv env = calibrated_stiff_env(1);
   env.reset(1);
-  env.apply_push(Eigen::Vector2d(0.0, 0.03), 0.3);
+  EXPECT_EQ(env.push_dim(), 2);
+  EXPECT_THROW(env.push_tip(Eigen::Vector3d(0.0, 0.03, 0.0), 0.3), Error);  // the limb's x and y
+  env.push_tip(Eigen::Vector2d(0.0, 0.03), 0.3);
   Observation observation;
   for (int k = 0; k < 4; ++k) observation = env.step(throttles(0, 0)).observation;
   EXPECT_GT(observation[1], 3.0f);

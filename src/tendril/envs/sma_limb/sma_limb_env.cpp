@@ -178,10 +178,11 @@ bool SmaLimbEnv::describe_scene(Scene& scene) const {
   return true;
 }
 
-void SmaLimbEnv::apply_push(const Eigen::Vector2d& force_n, double duration_s) {
+void SmaLimbEnv::push_tip(const Eigen::VectorXd& force_n, double duration_s) {
+  require(force_n.size() == 2, "a push on the limb has 2 components (x, y)", kId);
   require(force_n.allFinite() && std::isfinite(duration_s) && duration_s >= 0.0,
           "push force and duration must be finite, duration >= 0", kId);
-  robot_->push(force_n, duration_s);
+  robot_->push(Eigen::Vector2d(force_n), duration_s);
 }
 
 EnvDescription SmaLimbEnv::description() {

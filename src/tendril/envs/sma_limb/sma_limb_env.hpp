@@ -9,6 +9,7 @@
 #include "tendril/core/env.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/env_description.hpp"
+#include "tendril/envs/pushable_robot.hpp"
 #include "tendril/envs/sma_limb/limb_calibration.hpp"
 #include "tendril/envs/sma_limb/limb_robot.hpp"
 
@@ -35,7 +36,7 @@ namespace tendril::envs::sma_limb {
 // calibration (required: a file written by `tendril data calibrate`, or `none` — the thesis'
 // nominal bounds for the limb and no zero offsets; an Error names the key when it is missing),
 // backend (twin | bridge; default twin) and bridge (docs/hardware.md).
-class SmaLimbEnv : public Env {
+class SmaLimbEnv : public Env, public PushableRobot {
  public:
   static constexpr const char* kId = "SmaLimb/Robot-v0";
   static constexpr double kCutoffDeg = 100.0;
@@ -60,9 +61,10 @@ class SmaLimbEnv : public Env {
 
   const LimbCalibration& calibration() const { return calibration_; }
   const LimbRobot& robot() const { return *robot_; }
-  // A push on the tip (N along the limb's x and y) for `duration_s` — a disturbance for
-  // robustness tests; Error if the robot cannot be pushed by software.
-  void apply_push(const Eigen::Vector2d& force_n, double duration_s);
+  // PushableRobot: a push on the tip (N along the limb's x and y) for `duration_s` — a
+  // disturbance for robustness tests; Error if the robot cannot be pushed by software.
+  int push_dim() const override { return 2; }
+  void push_tip(const Eigen::VectorXd& force_n, double duration_s) override;
 
  private:
   Observation observe(const LimbSample& sample);
