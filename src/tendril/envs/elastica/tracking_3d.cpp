@@ -100,8 +100,9 @@ EnvDescription Tracking3D::description() {
       .episode_end = "terminated on a non-finite rod state; truncated by the time limit (10 s)",
       .parameters = {{"integrator", "", "verlet (the paper's), backward_euler or bdf2"},
                      {"lockstep_rods", "",
-                      "true: n_envs copies in training advance their rods together, vectorized "
-                      "across rods, with the same results (verlet only); false by default"}},
+                      "true: the n_envs copies of a vector env advance their rods together in "
+                      "one RodPool, vectorized across rods, with bit-identical results (verlet "
+                      "only; faster from about 8 envs, bench/pooled_arm_env_bench.cpp)"}},
   };
 }
 
