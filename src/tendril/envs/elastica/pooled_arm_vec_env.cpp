@@ -1,6 +1,7 @@
 #include "tendril/envs/elastica/pooled_arm_vec_env.hpp"
 
 #include <string>
+#include <utility>
 
 #include "tendril/core/error.hpp"
 #include "tendril/core/info_keys.hpp"
@@ -95,7 +96,7 @@ const VecStep& PooledArmVecEnv::step(const BatchMatrix& actions) {
       physics::Rod& rod = env.arm().rod;
       pool_.get_state(i, rod.mutable_state());
       rod.state_changed();
-      const Step step = env.finish_step(pool_.is_finite(i));
+      Step step = env.finish_step(pool_.is_finite(i));
 
       Episode& episode = episodes_[static_cast<std::size_t>(i)];
       episode.episode_return += step.reward;
@@ -106,7 +107,7 @@ const VecStep& PooledArmVecEnv::step(const BatchMatrix& actions) {
       result_.rewards[i] = static_cast<float>(step.reward);
       result_.terminated[i] = step.terminated ? 1 : 0;
       result_.truncated[i] = truncated ? 1 : 0;
-      result_.infos[i] = step.info;
+      result_.infos[i] = std::move(step.info);
       if (step.terminated || truncated) {
         result_.infos[i].set(info_keys::kEpisodeReturn, episode.episode_return);
         result_.infos[i].set(info_keys::kEpisodeLength, static_cast<double>(episode.length));
