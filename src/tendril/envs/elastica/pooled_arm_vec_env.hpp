@@ -21,13 +21,19 @@ namespace tendril::envs::elastica {
 // this behaves exactly as the ThreadedVecEnv of N `make(kId)` envs in EpisodeStatistics: the
 // same observations, rewards, flags and infos, the time limit (truncation unless the step
 // terminated), unseeded auto-reset, final observations, "episode_return" / "episode_length" in
-// the info of an episode's last step, seed_next_reset and snapshots; env i's random stream is
-// env i's of the threaded one.
+// the info of an episode's last step and seed_next_reset; env i's random stream is env i's of
+// the threaded one. Snapshots (every env's own, its episode totals) restore a run exactly; they
+// are this class's own, not loadable into a ThreadedVecEnv or back.
 //
-// Position Verlet only: RodPool rejects an implicit rod (integrator backward_euler or bdf2) with
-// an Error, as it rejects contact and rate-limited muscles — so the obstacle cases 3 and 4 have
-// no pooled vector env. The registry builds it for make_vector when the env parameter
-// lockstep_rods is true (EnvSpec::vector_factory).
+// Cost: it pays once the envs fill a block of rods — about 1.5× the env steps per second per
+// core of the threaded one at n_envs = 8 and 64, but 0.25× for one env, whose block of eight
+// lanes carries one rod (bench/pooled_arm_env_bench.cpp, docs/benchmarks.md).
+//
+// Position Verlet only: an implicit integrator (backward_euler, bdf2) is refused with an Error,
+// as RodPool refuses contact and rate-limited muscles — so the obstacle cases 3 and 4 have no
+// pooled vector env. The registry builds it for make_vector when the env parameter
+// lockstep_rods is true (EnvSpec::vector_factory); make_vec_env uses it when no per-env
+// wrappers are listed.
 class PooledArmVecEnv : public VecEnv {
  public:
   static constexpr const char* kId = "Elastica/Tracking3D-v0";
