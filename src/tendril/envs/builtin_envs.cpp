@@ -5,6 +5,7 @@
 #include "tendril/envs/classic_control/mountain_car_continuous.hpp"
 #include "tendril/envs/classic_control/pendulum.hpp"
 #include "tendril/envs/elastica/oriented_reach.hpp"
+#include "tendril/envs/elastica/pooled_arm_vec_env.hpp"
 #include "tendril/envs/elastica/structured_obstacles.hpp"
 #include "tendril/envs/elastica/tracking_3d.hpp"
 #include "tendril/envs/elastica/unstructured_obstacles.hpp"
@@ -38,10 +39,10 @@ void register_builtin_envs(Registry& registry) {
   registry.add({"IdentityBox-v0", &IdentityBox::create, 100, "repeat a scalar state within eps",
                 &IdentityBox::description});
   // The Elastica soft-arm control cases 1–4 (seed 000, SPEC M2); limits are 10 s, 2 s, 5 s, 5 s
-  // of 1.4 ms RL steps.
+  // of 1.4 ms RL steps. With lockstep_rods, make_vector advances case 1's rods in one RodPool.
   registry.add({"Elastica/Tracking3D-v0", &elastica::Tracking3D::create,
                 elastica::Tracking3D::kEpisodeSteps, "soft arm tracks a moving target (case 1)",
-                &elastica::Tracking3D::description});
+                &elastica::Tracking3D::description, &elastica::PooledArmVecEnv::create});
   registry.add({"Elastica/OrientedReach-v0", &elastica::OrientedReach::create,
                 elastica::OrientedReach::kEpisodeSteps,
                 "soft arm reaches a target position and orientation (case 2)",

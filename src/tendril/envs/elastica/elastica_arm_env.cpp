@@ -41,11 +41,19 @@ Observation ElasticaArmEnv::reset(std::optional<uint64_t> seed) {
 }
 
 Step ElasticaArmEnv::step(const Action& action) {
+  begin_step(action);
+  const bool finite = arm_.rod.advance(substeps_per_action_);
+  return finish_step(finite);
+}
+
+const Eigen::VectorXd& ElasticaArmEnv::begin_step(const Action& action) {
   check_action(action_space_, action, id_);
   muscle_targets_ = action.cast<double>();
   arm_.muscles->set_targets(muscle_targets_);
-  bool finite = arm_.rod.advance(substeps_per_action_);
+  return muscle_targets_;
+}
 
+Step ElasticaArmEnv::finish_step(bool finite) {
   Step result;
   if (finite) {
     advance_target(rng_);

@@ -47,6 +47,14 @@ class ElasticaArmEnv : public Env {
   // draws the case's target.
   Observation reset(std::optional<uint64_t> seed = std::nullopt) override;
   Step step(const Action& action) override;
+  // step() in two halves around the rod's advance, for a vector env that advances the rods of
+  // many arms together (PooledArmVecEnv): begin_step is step 1 above and returns the muscle
+  // targets it set; the caller then advances the rod by substeps_per_action() steps (or puts
+  // there the state such an advance gives) and calls finish_step with whether the rod's state
+  // is finite, which does step 3 and the NaN handling. begin_step + rod().advance +
+  // finish_step is step(), bit for bit.
+  const Eigen::VectorXd& begin_step(const Action& action);
+  Step finish_step(bool finite);
   // Snapshots hold the rod with its muscles, the target, the random stream and the last finite
   // observation; stepping on from a loaded snapshot repeats the original steps exactly.
   bool supports_snapshots() const override { return true; }

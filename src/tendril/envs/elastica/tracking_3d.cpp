@@ -15,14 +15,20 @@ physics::ElasticaArmSpec tracking_arm(physics::RodIntegrator integrator) {
 
 }  // namespace
 
-std::unique_ptr<Env> Tracking3D::create(const Config& params) {
-  physics::RodIntegrator integrator;
+Tracking3D::Options Tracking3D::Options::from_config(const Config& params) {
+  Options options;
   try {
-    integrator = physics::parse_integrator(params.get_or<std::string>("integrator", "verlet"));
+    options.integrator =
+        physics::parse_integrator(params.get_or<std::string>("integrator", "verlet"));
   } catch (const Error& e) {
     throw Error(e.what_wrong(), params.source() + ": integrator");
   }
-  return std::make_unique<Tracking3D>(integrator);
+  options.lockstep_rods = params.get_or<bool>("lockstep_rods", false);
+  return options;
+}
+
+std::unique_ptr<Env> Tracking3D::create(const Config& params) {
+  return std::make_unique<Tracking3D>(Options::from_config(params).integrator);
 }
 
 Tracking3D::Tracking3D(physics::RodIntegrator integrator)
@@ -92,7 +98,11 @@ EnvDescription Tracking3D::description() {
           "−d² + 0.5 if d ≤ 0.1 m, + 1.5 more if d ≤ 0.05 m, d the tip–target distance (seed 000, "
           "reach_reward); −1000 on a non-finite state",
       .episode_end = "terminated on a non-finite rod state; truncated by the time limit (10 s)",
-      .parameters = {{"integrator", "", "verlet (the paper's), backward_euler or bdf2"}},
+      .parameters = {{"integrator", "", "verlet (the paper's), backward_euler or bdf2"},
+                     {"lockstep_rods", "",
+                      "true: the n_envs copies of a vector env advance their rods together in "
+                      "one RodPool, vectorized across rods, with bit-identical results (verlet "
+                      "only; faster from about 8 envs, bench/pooled_arm_env_bench.cpp)"}},
   };
 }
 

@@ -33,8 +33,17 @@ class Tracking3D : public ElasticaArmEnv {
   static constexpr int kEpisodeSteps = 7142;  // 10 s / 1.4 ms
   static constexpr double kNanPenalty = -1000.0;
 
-  // Registry factory; params: integrator (verlet, the paper's and the default; backward_euler
-  // or bdf2: one implicit step per action, docs/results/implicit_rods.md).
+  // The registry's parameters: integrator (verlet, the paper's and the default; backward_euler
+  // or bdf2: one implicit step per action, docs/results/implicit_rods.md) and lockstep_rods
+  // (false by default; true: make_vector advances the n_envs rods together, PooledArmVecEnv;
+  // one env alone is the same either way).
+  struct Options {
+    physics::RodIntegrator integrator = physics::RodIntegrator::kPositionVerlet;
+    bool lockstep_rods = false;
+    // Raises Error naming the key for a malformed value.
+    static Options from_config(const Config& params);
+  };
+  // Registry factory (Options).
   static std::unique_ptr<Env> create(const Config& params);
   // The environment in words, for `tendril list envs --describe` (env_description.hpp).
   static EnvDescription description();
