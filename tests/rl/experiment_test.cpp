@@ -75,6 +75,16 @@ TEST(ExperimentWrappers, BadEntriesAreRefusedNamingTheKey) {
   EXPECT_NE(shape.find("env.wrappers"), std::string::npos) << shape;
 }
 
+// Lockstep rods put one pool under every copy; per-env wrappers would go around it.
+TEST(ExperimentWrappers, LockstepRodsUnderPerEnvWrappersAreRefused) {
+  Config config = Config::parse(kExperiment, "test.yaml");
+  config.set("env.id", "Elastica/Tracking3D-v0");
+  config.set("env.params", "{lockstep_rods: true}");
+  const std::string message = error_message([&] { Experiment::from_config(config); });
+  EXPECT_NE(message.find("lockstep_rods"), std::string::npos) << message;
+  EXPECT_NE(message.find("wrappers"), std::string::npos) << message;
+}
+
 TEST(ExperimentWrappers, EveryEnvironmentOfTheRunCarriesThem) {
   const Experiment experiment = Experiment::from_config(config());
   ASSERT_EQ(experiment.env.wrappers.size(), 1u);

@@ -15,6 +15,14 @@ std::unique_ptr<envs::VecEnv> make_vec_env(const VecEnvOptions& options) {
   // An env that steps N copies at once (a batched learned model) is built as one, unless
   // per-env wrappers are asked for.
   std::unique_ptr<envs::VecEnv> env;
+  // Asking for lockstep rods (Elastica/Tracking3D-v0) means one pool under all the copies, which
+  // per-env wrappers would go around: refused rather than quietly ignored.
+  const bool lockstep =
+      options.params.has("lockstep_rods") && options.params.get<bool>("lockstep_rods");
+  require(options.wrappers.empty() || !lockstep,
+          "lockstep_rods steps the copies together and cannot sit under per-env wrappers; remove "
+          "env.wrappers or lockstep_rods",
+          options.id);
   if (options.wrappers.empty()) env = envs::make_vector(options.id, options.params, options.n_envs);
   if (!env) {
     auto factory = [&options](int) -> std::unique_ptr<Env> {
