@@ -23,19 +23,12 @@ std::vector<std::unique_ptr<Tracking3D>> build(int num_envs) {
 }  // namespace
 
 PooledArmVecEnv::PooledArmVecEnv(int num_envs, std::optional<int64_t> max_episode_steps)
-    : envs_(build(num_envs)),
+    : BatchedVecEnv(kWhere, max_episode_steps),
+      envs_(build(num_envs)),
       pool_(envs_.front()->arm().rod, num_envs),
-      max_episode_steps_(max_episode_steps),
-      episodes_(static_cast<std::size_t>(num_envs)),
-      next_reset_seeds_(static_cast<std::size_t>(num_envs)),
-      action_(Action::Zero(action_space().size())) {
-  const int size = observation_space().size();
-  result_.observations = BatchMatrix::Zero(num_envs, size);
-  result_.final_observations = BatchMatrix::Zero(num_envs, size);
-  result_.rewards = Eigen::VectorXf::Zero(num_envs);
-  result_.terminated.assign(num_envs, 0);
-  result_.truncated.assign(num_envs, 0);
-  result_.infos.assign(num_envs, Info{});
+      action_(Action::Zero(action_space().size())),
+      last_observations_(BatchMatrix::Zero(num_envs, observation_space().size())) {
+  allocate(num_envs);
 }
 
 std::unique_ptr<VecEnv> PooledArmVecEnv::create(const Config& params, int num_envs,
@@ -51,113 +44,56 @@ std::unique_ptr<VecEnv> PooledArmVecEnv::create(const Config& params, int num_en
   return std::make_unique<PooledArmVecEnv>(num_envs, max_episode_steps);
 }
 
-void PooledArmVecEnv::seed_next_reset(int env, uint64_t seed) {
-  require(env >= 0 && env < num_envs(), "no environment " + std::to_string(env), kWhere);
-  next_reset_seeds_[static_cast<std::size_t>(env)] = seed;
-}
-
-void PooledArmVecEnv::reset_env(int i, std::optional<uint64_t> seed) {
+void PooledArmVecEnv::reset_env(int i, std::optional<uint64_t> seed,
+                                Eigen::Ref<Eigen::RowVectorXf> row) {
   Tracking3D& env = *envs_[static_cast<std::size_t>(i)];
-  result_.observations.row(i) = env.reset(seed).transpose();
+  last_observations_.row(i) = env.reset(seed).transpose();
+  row = last_observations_.row(i);
   pool_.set_state(i, env.arm().rod.state());
-  episodes_[static_cast<std::size_t>(i)] = Episode{};
 }
 
-const BatchMatrix& PooledArmVecEnv::reset(std::optional<uint64_t> seed) {
-  next_reset_seeds_.assign(static_cast<std::size_t>(num_envs()), std::nullopt);
-  ready_ = false;
+void PooledArmVecEnv::step_envs(const BatchMatrix& actions) {
+  // Every action is checked (the lowest env index's error is the one raised) before any rod
+  // moves.
   for (int i = 0; i < num_envs(); ++i) {
-    reset_env(i, seed ? std::optional<uint64_t>(*seed + static_cast<uint64_t>(i)) : std::nullopt);
+    action_ = actions.row(i).transpose();
+    pool_.set_targets(i, envs_[static_cast<std::size_t>(i)]->begin_step(action_));
   }
-  ready_ = true;
-  return result_.observations;
+  // Whether any rod became non-finite is each env's own outcome (is_finite in outcome).
+  static_cast<void>(pool_.advance(envs_.front()->substeps_per_action()));
 }
 
-const VecStep& PooledArmVecEnv::step(const BatchMatrix& actions) {
-  require(ready_, "step called before reset (or after an error)", kWhere);
-  if (actions.rows() != num_envs() || actions.cols() != action_space().size()) {
-    throw Error("actions are " + std::to_string(actions.rows()) + " x " +
-                    std::to_string(actions.cols()) + ", expected " + std::to_string(num_envs()) +
-                    " x " + std::to_string(action_space().size()) + " (envs x action size)",
-                kWhere);
-  }
-  const int substeps = envs_.front()->substeps_per_action();
-  try {
-    // Every action is checked (the lowest env index's error is the one raised) before any rod
-    // moves.
-    for (int i = 0; i < num_envs(); ++i) {
-      action_ = actions.row(i).transpose();
-      pool_.set_targets(i, envs_[static_cast<std::size_t>(i)]->begin_step(action_));
-    }
-    // Whether any rod became non-finite is each env's own outcome (is_finite below).
-    static_cast<void>(pool_.advance(substeps));
-    for (int i = 0; i < num_envs(); ++i) {
-      Tracking3D& env = *envs_[static_cast<std::size_t>(i)];
-      physics::Rod& rod = env.arm().rod;
-      pool_.get_state(i, rod.mutable_state());
-      rod.state_changed();
-      Step step = env.finish_step(pool_.is_finite(i));
-
-      Episode& episode = episodes_[static_cast<std::size_t>(i)];
-      episode.episode_return += step.reward;
-      ++episode.length;
-      const bool truncated =
-          !step.terminated && max_episode_steps_ && episode.length >= *max_episode_steps_;
-      result_.final_observations.row(i) = step.observation.transpose();
-      result_.rewards[i] = static_cast<float>(step.reward);
-      result_.terminated[i] = step.terminated ? 1 : 0;
-      result_.truncated[i] = truncated ? 1 : 0;
-      result_.infos[i] = std::move(step.info);
-      if (step.terminated || truncated) {
-        result_.infos[i].set(info_keys::kEpisodeReturn, episode.episode_return);
-        result_.infos[i].set(info_keys::kEpisodeLength, static_cast<double>(episode.length));
-        // Auto-reset without a seed unless seed_next_reset gave one (ThreadedVecEnv's rule).
-        reset_env(i, next_reset_seeds_[static_cast<std::size_t>(i)]);
-        next_reset_seeds_[static_cast<std::size_t>(i)].reset();
-      } else {
-        result_.observations.row(i) = result_.final_observations.row(i);
-      }
-    }
-  } catch (...) {
-    ready_ = false;
-    throw;
-  }
-  return result_;
+BatchedVecEnv::Outcome PooledArmVecEnv::outcome(int i, Eigen::Ref<Eigen::RowVectorXf> row) {
+  Tracking3D& env = *envs_[static_cast<std::size_t>(i)];
+  physics::Rod& rod = env.arm().rod;
+  pool_.get_state(i, rod.mutable_state());
+  rod.state_changed();
+  Step step = env.finish_step(pool_.is_finite(i));
+  last_observations_.row(i) = step.observation.transpose();
+  row = last_observations_.row(i);
+  return {step.reward, step.terminated, std::move(step.info)};
 }
 
-void PooledArmVecEnv::save_state(SnapshotWriter& out, bool environments) const {
-  out.section(kWhere);
-  out.put(static_cast<int64_t>(num_envs()));
-  const bool with_envs = environments && ready_;
-  out.put(with_envs);
-  if (!with_envs) return;
+void PooledArmVecEnv::save_envs(SnapshotWriter& out) const {
   for (std::size_t i = 0; i < envs_.size(); ++i) {
     envs_[i]->save_state(out);
-    out.put(episodes_[i].episode_return);
-    out.put(episodes_[i].length);
+    out.put_matrix(last_observations_.row(static_cast<Eigen::Index>(i)));
   }
 }
 
-bool PooledArmVecEnv::load_state(SnapshotReader& in) {
-  in.section(kWhere);
-  const int64_t count = in.get_int64();
-  require(count == num_envs(),
-          "snapshot of " + std::to_string(count) + " environments, this vector env has " +
-              std::to_string(num_envs()),
-          kWhere);
-  if (!in.get_bool()) return false;
-  // Environments load one by one; a failure leaves the vector env needing a reset.
-  ready_ = false;
+void PooledArmVecEnv::load_envs(SnapshotReader& in) {
+  Eigen::RowVectorXf row(observation_space().size());
   for (int i = 0; i < num_envs(); ++i) {
     Tracking3D& env = *envs_[static_cast<std::size_t>(i)];
     env.load_state(in);
-    Episode& episode = episodes_[static_cast<std::size_t>(i)];
-    episode.episode_return = in.get_double();
-    episode.length = in.get_int64();
+    in.get_matrix(row);
+    last_observations_.row(i) = row;
     pool_.set_state(i, env.arm().rod.state());
   }
-  ready_ = true;
-  return true;
+}
+
+void PooledArmVecEnv::observe(int i, Eigen::Ref<Eigen::RowVectorXf> row) const {
+  row = last_observations_.row(i);
 }
 
 }  // namespace tendril::envs::elastica

@@ -7,7 +7,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/envs/elastica/tracking_3d.hpp"
-#include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/envs/vector/batched_vec_env.hpp"
 #include "tendril/physics/rod/rod_pool.hpp"
 
 namespace tendril::envs::elastica {
@@ -34,7 +34,7 @@ namespace tendril::envs::elastica {
 // pooled vector env. The registry builds it for make_vector when the env parameter
 // lockstep_rods is true (EnvSpec::vector_factory); make_vec_env uses it when no per-env
 // wrappers are listed.
-class PooledArmVecEnv : public VecEnv {
+class PooledArmVecEnv : public BatchedVecEnv {
  public:
   static constexpr const char* kId = "Elastica/Tracking3D-v0";
 
@@ -48,34 +48,24 @@ class PooledArmVecEnv : public VecEnv {
   int num_envs() const override { return static_cast<int>(envs_.size()); }
   const Space& observation_space() const override { return envs_.front()->observation_space(); }
   const Space& action_space() const override { return envs_.front()->action_space(); }
-  const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) override;
-  const VecStep& step(const BatchMatrix& actions) override;
-  void seed_next_reset(int env, uint64_t seed) override;
-
-  bool supports_snapshots() const override { return true; }
-  void save_state(SnapshotWriter& out, bool environments) const override;
-  bool load_state(SnapshotReader& in) override;
 
   // Env i's task and arm (its rod holds the pool's state of rod i after every step).
   const Tracking3D& env(int i) const { return *envs_.at(static_cast<std::size_t>(i)); }
 
  private:
-  struct Episode {
-    double episode_return = 0.0;
-    int64_t length = 0;
-  };
-
   // Resets env i and puts its rod's state into the pool.
-  void reset_env(int i, std::optional<uint64_t> seed);
+  void reset_env(int i, std::optional<uint64_t> seed, Eigen::Ref<Eigen::RowVectorXf> row) override;
+  void step_envs(const BatchMatrix& actions) override;
+  Outcome outcome(int i, Eigen::Ref<Eigen::RowVectorXf> row) override;
+  void save_envs(SnapshotWriter& out) const override;
+  void load_envs(SnapshotReader& in) override;
+  void observe(int i, Eigen::Ref<Eigen::RowVectorXf> row) const override;
 
   std::vector<std::unique_ptr<Tracking3D>> envs_;
   physics::RodPool pool_;
-  std::optional<int64_t> max_episode_steps_;
-  std::vector<Episode> episodes_;
-  std::vector<std::optional<uint64_t>> next_reset_seeds_;
   Action action_;  // one row of the actions, reused
-  VecStep result_;
-  bool ready_ = false;
+  // The observation each env's last reset or step gave (what load_envs restores the rows from).
+  BatchMatrix last_observations_;
 };
 
 }  // namespace tendril::envs::elastica

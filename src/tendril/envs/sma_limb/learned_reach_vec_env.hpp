@@ -7,7 +7,7 @@
 
 #include "tendril/core/config.hpp"
 #include "tendril/envs/sma_limb/learned_reach_batch.hpp"
-#include "tendril/envs/vector/vec_env.hpp"
+#include "tendril/envs/vector/batched_vec_env.hpp"
 
 namespace tendril::envs::sma_limb {
 
@@ -18,7 +18,7 @@ namespace tendril::envs::sma_limb {
 // observations, and "episode_return" / "episode_length" in the info of an episode's last step;
 // env i's random stream is env i's of the threaded one. The registry builds it for make_vec_env
 // (EnvSpec::vector_factory).
-class LearnedReachVecEnv : public VecEnv {
+class LearnedReachVecEnv : public BatchedVecEnv {
  public:
   LearnedReachVecEnv(std::shared_ptr<DynamicsModel> model, LearnedReachOptions options,
                      int num_envs, uint64_t seed, std::optional<int64_t> max_episode_steps);
@@ -29,29 +29,20 @@ class LearnedReachVecEnv : public VecEnv {
   int num_envs() const override { return batch_.num_envs(); }
   const Space& observation_space() const override { return observation_space_; }
   const Space& action_space() const override { return action_space_; }
-  const BatchMatrix& reset(std::optional<uint64_t> seed = std::nullopt) override;
-  const VecStep& step(const BatchMatrix& actions) override;
-  void seed_next_reset(int env, uint64_t seed) override;
-
-  bool supports_snapshots() const override { return true; }
-  void save_state(SnapshotWriter& out, bool environments) const override;
-  bool load_state(SnapshotReader& in) override;
 
   const LearnedReachBatch& task() const { return batch_; }
 
  private:
-  struct Episode {
-    double episode_return = 0.0;
-    int64_t length = 0;
-  };
+  void reset_env(int i, std::optional<uint64_t> seed, Eigen::Ref<Eigen::RowVectorXf> row) override;
+  void step_envs(const BatchMatrix& actions) override { batch_.step(actions); }
+  Outcome outcome(int i, Eigen::Ref<Eigen::RowVectorXf> row) override;
+  void save_envs(SnapshotWriter& out) const override { batch_.save_state(out); }
+  void load_envs(SnapshotReader& in) override { batch_.load_state(in); }
+  void observe(int i, Eigen::Ref<Eigen::RowVectorXf> row) const override;
 
   LearnedReachBatch batch_;
-  std::optional<int64_t> max_episode_steps_;
   Space observation_space_, action_space_;
-  std::vector<Episode> episodes_;
-  VecStep result_;
-  bool ready_ = false;
-  std::vector<std::optional<uint64_t>> next_reset_seeds_;
+  mutable Eigen::VectorXf observation_;  // one env's observation, reused
 };
 
 }  // namespace tendril::envs::sma_limb
