@@ -6,11 +6,13 @@
 One row per run: the success rate of the last 100 training episodes (progress.csv's
 rollout/success_rate) at the first log row past 250k and 500k steps and at the end, the mean
 length and return of those episodes at the end, the steps done, and the training's wall time
-(time/time_elapsed, s). Then one row per directory holding runs (a sweep): the mean and the
-range of the final success rates over its runs.
+(time/time_elapsed, s). Then one row per configuration (a sweep's directory, and the run's name
+without its seed token where the sweep varies more than the seed): the mean and the range of the
+final success rates over its runs.
 """
 import csv
 import os
+import re
 import sys
 
 
@@ -37,6 +39,13 @@ def success_after(rows, steps):
     return ""
 
 
+def group_of(run_dir):
+    """The sweep directory, with the run's name but its seed token when it has more
+    (runs/sweeps/ur5_ppo_base_bonus/success_bonus_0-seed_42 → …/success_bonus_0)."""
+    rest = re.sub(r"(^|[-_])seed_?\d+", "", os.path.basename(run_dir), count=1).strip("-_")
+    return os.path.join(os.path.dirname(run_dir), rest) if rest else os.path.dirname(run_dir)
+
+
 def main(run_dirs):
     print("run,seed,success_250k,success_500k,success_final,length_final,return_final,steps,"
           "wall_s")
@@ -50,7 +59,7 @@ def main(run_dirs):
             last.get("rollout/success_rate", ""), round(float(last["rollout/ep_len_mean"]), 1),
             round(float(last["rollout/ep_rew_mean"]), 1), last["time/total_timesteps"],
             round(float(last["time/time_elapsed"]))]))
-        finals.setdefault(os.path.dirname(name), []).append(float(last["rollout/success_rate"]))
+        finals.setdefault(group_of(name), []).append(float(last["rollout/success_rate"]))
     print()
     print("directory,runs,success_final_mean,success_final_min,success_final_max")
     for directory, values in finals.items():
