@@ -1,5 +1,6 @@
 // Warm starts: a new run begins from another run's learned state and keeps its own counters.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -34,8 +35,11 @@ seed: 5
 checkpoint_freq: 800
 )";
 
+// Each test runs in a process of its own (ctest -j), and each builds its own source run: the
+// process id keeps their directories apart.
 fs::path fresh(const std::string& name) {
-  const fs::path directory = fs::temp_directory_path() / ("tendril_warm_start_" + name);
+  const fs::path directory =
+      fs::temp_directory_path() / ("tendril_warm_start_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(directory);
   return directory;
 }
