@@ -10,11 +10,12 @@
 
 #ifdef TENDRIL_WITH_DYNAMICS
 #include "tendril/dynamics/env_model_loader.hpp"
+#include "tendril/dynamics/policy_heads.hpp"
 #endif
 #include "support/error_message.hpp"
 #include "tendril/rl/experiment.hpp"
-#include "tendril/sweeps/sweep.hpp"
 #include "tendril/safety/safety_evaluation.hpp"
+#include "tendril/sweeps/sweep.hpp"
 
 // Every training experiment and sweep file under configs/ reads: each key is known and valid,
 // and the environment builds (rl::Experiment builds it once). A file that starts from the
@@ -72,6 +73,7 @@ class InRepositoryRoot : public ::testing::Test {
     std::filesystem::current_path(kRoot);
 #ifdef TENDRIL_WITH_DYNAMICS
     dynamics::install_model_loader();
+    dynamics::install_policy_heads();
 #endif
   }
   void TearDown() override { std::filesystem::current_path(previous_); }
