@@ -15,6 +15,7 @@
 #include "tendril/core/atomic_file.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/interrupt.hpp"
+#include "tendril/core/run_curves.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/runner/episode_files.hpp"
 #include "tendril/envs/runner/step_statistics.hpp"
@@ -30,20 +31,6 @@ namespace tendril::apps {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Spread {
-  double mean = 0.0, sd = 0.0;
-};
-
-Spread spread_of(const std::vector<double>& values) {
-  Spread s;
-  if (values.empty()) return s;
-  for (double v : values) s.mean += v;
-  s.mean /= static_cast<double>(values.size());
-  for (double v : values) s.sd += (v - s.mean) * (v - s.mean);
-  s.sd = std::sqrt(s.sd / static_cast<double>(values.size()));
-  return s;
-}
 
 // One row per finished episode: index, seed, return, length, then the final info values.
 std::string episodes_csv(const envs::RunResult& result) {
@@ -91,8 +78,8 @@ void print_summary(const envs::RunResult& result, const envs::StepStatistics& st
   if (!returns.empty()) {
     const Spread r = spread_of(returns), l = spread_of(lengths);
     std::printf("over the finished episodes (mean +/- sd):\n");
-    std::printf("  %-24s %.6g +/- %.6g\n", "return", r.mean, r.sd);
-    std::printf("  %-24s %.6g +/- %.6g\n", "length", l.mean, l.sd);
+    std::printf("  %-24s %.6g +/- %.6g\n", "return", r.mean, r.std);
+    std::printf("  %-24s %.6g +/- %.6g\n", "length", l.mean, l.std);
     // Each info value at the episodes' ends (a success flag's mean is the success rate).
     for (const auto& entry : result.episodes.front().final_info.entries()) {
       std::vector<double> values;
@@ -100,7 +87,7 @@ void print_summary(const envs::RunResult& result, const envs::StepStatistics& st
         if (episode.finished) values.push_back(episode.final_info.get(entry.first).value_or(0.0));
       }
       const Spread v = spread_of(values);
-      std::printf("  %-24s %.6g +/- %.6g\n", ("final " + entry.first).c_str(), v.mean, v.sd);
+      std::printf("  %-24s %.6g +/- %.6g\n", ("final " + entry.first).c_str(), v.mean, v.std);
     }
   }
   if (steps.steps() > 0) {

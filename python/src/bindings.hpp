@@ -10,5 +10,6 @@ void bind_vec_env(pybind11::module_& m);
 void bind_policy(pybind11::module_& m);
 void bind_train(pybind11::module_& m);
 void bind_render(pybind11::module_& m);
+void bind_curves(pybind11::module_& m);
 
 }  // namespace tendril::python

@@ -40,6 +40,7 @@ PYBIND11_MODULE(_tendril, m) {
   tendril::python::bind_policy(m);
   tendril::python::bind_train(m);
   tendril::python::bind_render(m);
+  tendril::python::bind_curves(m);
   m.def("numerics", &tendril::numerics_description,
         "How this build's floating-point results reproduce: the build mode and the OpenBLAS "
         "kernels in use (docs/reproducibility.md).");

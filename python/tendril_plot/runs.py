@@ -76,17 +76,23 @@ def expand_runs(paths):
     return runs
 
 
+def _run_curves():
+    """The extension's grouping and statistics over seeds (core/run_curves): the code the sweep
+    summaries and the dashboard use, so a figure and a table of the same runs agree."""
+    try:
+        from tendril import _tendril
+    except ImportError as e:
+        raise PlotError("grouping runs by seed needs tendril's Python extension (built by default; "
+                        f"`tendril plot` finds it in the build): {e}")
+    return _tendril
+
+
 def seed_group(name, parent=""):
     """A run's name without its seed token, a trailing time stamp and the separators left at its
-    ends: "n_steps_256-seed_3" → "n_steps_256", "ppo_case1_seed0" → "ppo_case1",
-    "seed_3-tau_0.01" → "tau_0.01", "ppo-seed1-20261128-093000" → "ppo" (`tendril train`'s
-    default name); a name that is only a seed ("seed_42") gives `parent`, the name of the
-    directory holding the run (a sweep over seeds alone), or "seeds". Runs differing only by
-    seed share a group. The same rule as the sweep summary's (rl::seed_group) and the
-    dashboard's (web/src/aggregate.js)."""
-    stripped = re.sub(r"(^|[-_])seed_?\d+", "", name, count=1, flags=re.IGNORECASE)
-    stripped = re.sub(r"[-_]\d{8}-\d{6}$", "", stripped)  # the time stamp of `tendril train`
-    return stripped.strip("-_") or parent or "seeds"
+    ends: "n_steps_256-seed_3" → "n_steps_256", "ppo-seed1-20261128-093000" → "ppo"; a name
+    that is only a seed ("seed_42") gives `parent`, the name of the directory holding the run,
+    or "seeds". Runs differing only by seed share a group."""
+    return _run_curves().seed_group(name, parent)
 
 
 def curve(run, metric, x_column=STEPS):
@@ -123,14 +129,11 @@ def aggregate(curves, points=200):
     """Mean and standard deviation (population), minimum and maximum of curves on `points`
     evenly spaced x values over the range every curve covers (so each point averages all seeds),
     by linear interpolation."""
-    curves = [c for c in curves if len(c["x"]) > 0]
-    if not curves:
+    stats = _run_curves().aggregate_curves([(c["x"], c["y"]) for c in curves], points, "common")
+    if stats["curves"] == 0:
         raise PlotError("no data to aggregate")
-    start = max(c["x"][0] for c in curves)
-    end = min(c["x"][-1] for c in curves)
-    if end < start:
+    if not stats["x"]:
         raise PlotError("the runs' x ranges do not overlap")
-    grid = np.linspace(start, end, points) if end > start else np.array([start])
-    stack = np.array([np.interp(grid, c["x"], c["y"]) for c in curves])
-    return {"x": grid, "mean": stack.mean(axis=0), "std": stack.std(axis=0),
-            "min": stack.min(axis=0), "max": stack.max(axis=0), "n": len(curves)}
+    result = {key: np.asarray(stats[key], dtype=float) for key in ("x", "mean", "std", "min", "max")}
+    result["n"] = stats["curves"]
+    return result

@@ -232,6 +232,65 @@ TEST_F(ServerTest, CsvRowsComeInSlicesAndMalformedLinesAreReported) {
   EXPECT_EQ(not_csv->status, 400);
 }
 
+// Runs grouped by seed with each group's statistics at every point, over the span any of its
+// runs covers (core/run_curves): ppo_seed0 has rows at 100 and 200 (its line at 300 is still
+// being written), ppo_seed1 at 100 and 400; on the grid 100, 250, 400 the first point averages
+// both seeds and the others only ppo_seed1, whose value at 250 is interpolated.
+TEST_F(ServerTest, CurvesOfRunsComeGroupedBySeed) {
+  const fs::path runs = directory_ / "root" / "runs";
+  fs::create_directories(runs / "ppo_seed1");
+  std::ofstream(runs / "ppo_seed1" / "config.yaml") << "algorithm: ppo\n";
+  std::ofstream(runs / "ppo_seed1" / "progress.csv")
+      << "time/total_timesteps,rollout/ep_rew_mean\n100,-7\n400,-1\n";
+  fs::create_directories(runs / "sac_seed0");
+  std::ofstream(runs / "sac_seed0" / "config.yaml") << "algorithm: sac\n";
+
+  auto answer =
+      get("/api/curves?runs=runs/ppo_seed0|runs/ppo_seed1|runs/sac_seed0"
+          "&metric=rollout/ep_rew_mean&points=3");
+  ASSERT_TRUE(answer);
+  EXPECT_EQ(answer->status, 200) << answer->body;
+  EXPECT_EQ(answer->body,
+            R"({"metric":"rollout/ep_rew_mean","groups":[)"
+            R"({"name":"ppo","runs":["runs/ppo_seed0","runs/ppo_seed1"],"problems":[],)"
+            R"("curves":2,"x":[100,250,400],"mean":[-6,-4,-1],"std":[1,0,0],"min":[-7,-4,-1],)"
+            R"("max":[-5,-4,-1],"count":[2,1,1]},)"
+            R"({"name":"sac","runs":["runs/sac_seed0"],)"
+            R"("problems":["runs/sac_seed0/progress.csv: no such file"],)"
+            R"("curves":0,"x":[],"mean":[],"std":[],"min":[],"max":[],"count":[]}]})");
+
+  // The index counts a directory's groups the same way: linked_episodes, ppo (two seeds), sac.
+  auto index = get("/api/index");
+  ASSERT_TRUE(index);
+  EXPECT_TRUE(contains(index->body,
+                       R"("runs":["runs/linked_episodes","runs/ppo_seed0","runs/ppo_seed1",)"
+                       R"("runs/sac_seed0"],"groups":3,)"))
+      << index->body;
+
+  auto evaluation = get("/api/curves?runs=runs/ppo_seed0&metric=eval");
+  ASSERT_TRUE(evaluation);
+  EXPECT_TRUE(contains(evaluation->body, R"("x":[100],"mean":[-6],)")) << evaluation->body;
+  auto no_column = get("/api/curves?runs=runs/ppo_seed1&metric=train/loss");
+  ASSERT_TRUE(no_column);
+  EXPECT_TRUE(contains(no_column->body,
+                       "runs/ppo_seed1/progress.csv: has no column 'train/loss' (it has: "
+                       "rollout/ep_rew_mean, time/total_timesteps)"))
+      << no_column->body;
+
+  for (const auto& [target, status] : std::vector<std::pair<std::string, int>>{
+           {"/api/curves?metric=eval", 400},
+           {"/api/curves?runs=runs/ppo_seed0", 400},
+           {"/api/curves?runs=|&metric=eval", 400},
+           {"/api/curves?runs=runs/ppo_seed0&metric=eval&points=0", 400},
+           {"/api/curves?runs=runs/none&metric=eval", 404},
+           {"/api/curves?runs=runs&metric=eval", 404},
+           {"/api/curves?runs=runs/ppo_seed0|../outside/outrun&metric=eval", 403}}) {
+    auto refused = get(target);
+    ASSERT_TRUE(refused) << target;
+    EXPECT_EQ(refused->status, status) << target << " " << refused->body;
+  }
+}
+
 TEST_F(ServerTest, EpisodesComeWithTheirFramesOrWhatIsWrong) {
   auto whole = get("/api/episode?path=runs/ppo_seed0/episodes/episode_0000.tep");
   ASSERT_TRUE(whole);

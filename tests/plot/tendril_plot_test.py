@@ -14,12 +14,14 @@ import zlib
 
 TENDRIL, RUNS, OUT = sys.argv[1:4]
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "python"))
+# The build's tendril package (with its extension) before the sources', as `tendril plot` has it.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(TENDRIL))), "python"))
 
 import numpy as np  # noqa: E402
 import matplotlib.image  # noqa: E402
 
 from tendril_plot.episode import EpisodeError, read_episode  # noqa: E402
-from tendril_plot.runs import natural_key, read_csv, seed_group  # noqa: E402
+from tendril_plot.runs import aggregate, natural_key, read_csv, seed_group  # noqa: E402
 from tendril_plot.tables import distinct  # noqa: E402
 
 RUN = os.path.join(RUNS, "sweep", "ppo_seed0")
@@ -280,7 +282,7 @@ class FigureTest(unittest.TestCase):
 
 class SeedGroupTest(unittest.TestCase):
     def test_the_rule_of_the_sweep_summary(self):
-        # The cases of tests/sweeps/sweep_summary_test.cpp (SeedGroup): both sides group alike.
+        # The cases of tests/core/run_curves_test.cpp (SeedGroup): the figures group by that code.
         cases = {("n_steps_256-seed_3", ""): "n_steps_256", ("ppo_case1_seed0", ""): "ppo_case1",
                  ("seed_3-tau_0.01", ""): "tau_0.01",
                  ("n_steps_64-seed_12-gamma_0.9", ""): "n_steps_64-gamma_0.9",
@@ -291,6 +293,16 @@ class SeedGroupTest(unittest.TestCase):
                  ("lr_0.001-20261128-093000", ""): "lr_0.001"}
         for (name, parent), group in cases.items():
             self.assertEqual(seed_group(name, parent), group, name)
+
+    def test_curves_are_aggregated_over_the_range_every_seed_covers(self):
+        # y = x on [0, 10] and y = 3 x on [5, 20]: on the common range [5, 10] the mean is 2 x
+        # and the population std x (core/run_curves, as the sweep summaries compute it).
+        stats = aggregate([{"x": np.array([0.0, 10.0]), "y": np.array([0.0, 10.0])},
+                           {"x": np.array([5.0, 20.0]), "y": np.array([15.0, 60.0])}], points=6)
+        np.testing.assert_allclose(stats["x"], [5, 6, 7, 8, 9, 10])
+        np.testing.assert_allclose(stats["mean"], 2 * stats["x"])
+        np.testing.assert_allclose(stats["std"], stats["x"])
+        self.assertEqual(stats["n"], 2)
 
     def test_runs_are_ordered_by_the_numbers_in_their_names(self):
         # A sweep's directory lists batch sizes as text ("1024" < "256"); curves, their

@@ -20,66 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TEST(SeedGroup, DropsTheSeedTokenAndTheSeparatorsItLeaves) {
-  EXPECT_EQ(seed_group("n_steps_256-seed_3"), "n_steps_256");
-  EXPECT_EQ(seed_group("ppo_case1_seed0"), "ppo_case1");
-  EXPECT_EQ(seed_group("seed_3-tau_0.01"), "tau_0.01");
-  EXPECT_EQ(seed_group("n_steps_64-seed_12-gamma_0.9"), "n_steps_64-gamma_0.9");
-  EXPECT_EQ(seed_group("PPO_Seed7"), "PPO");
-  EXPECT_EQ(seed_group("seed_42", "ur5_ppo_base"), "ur5_ppo_base");
-  EXPECT_EQ(seed_group("seed_42"), "seeds");
-  EXPECT_EQ(seed_group("tau_0.01"), "tau_0.01");  // no seed: a group of its own
-  // `tendril train`'s default names: seeds of one experiment group, whenever each was trained.
-  EXPECT_EQ(seed_group("ppo_pendulum-seed1-20261128-093000"), "ppo_pendulum");
-  EXPECT_EQ(seed_group("ppo_pendulum-seed2-20261128-093512"), "ppo_pendulum");
-  EXPECT_EQ(seed_group("lr_0.001-20261128-093000"), "lr_0.001");
-}
-
-TEST(SpreadOf, MeanPopulationStdMinMax) {
-  const Spread s = spread_of({1.0, 2.0, 3.0, 4.0});
-  EXPECT_DOUBLE_EQ(s.mean, 2.5);
-  EXPECT_DOUBLE_EQ(s.std, std::sqrt(1.25));  // (2.25 + 0.25 + 0.25 + 2.25) / 4
-  EXPECT_DOUBLE_EQ(s.min, 1.0);
-  EXPECT_DOUBLE_EQ(s.max, 4.0);
-  EXPECT_EQ(s.count, 4);
-  EXPECT_TRUE(std::isnan(spread_of({}).mean));
-}
-
-// Lines y = a x over different x ranges: on the common range every interpolated value is
-// exact, so the mean is mean(a) x and the std std(a) |x| at each grid point.
-TEST(AggregateCurves, MeanAndSpreadOnTheRangeEveryCurveCovers) {
-  const double slopes[] = {1.0, 2.0, 6.0};
-  const double starts[] = {0.0, 2.0, 1.0}, ends[] = {10.0, 12.0, 8.0};
-  std::vector<Curve> curves;
-  for (int k = 0; k < 3; ++k) {
-    Curve c;
-    for (double x = starts[k]; x <= ends[k] + 1e-9; x += 0.5 + k * 0.25) {
-      c.x.push_back(x);
-      c.y.push_back(slopes[k] * x);
-    }
-    c.x.push_back(ends[k]);  // the last point exactly at the end (a repeated x is harmless)
-    c.y.push_back(slopes[k] * ends[k]);
-    curves.push_back(c);
-  }
-  curves.push_back(Curve{});  // a run without data is left out
-  const CurveStats stats = aggregate_curves(curves, 13);
-  ASSERT_EQ(stats.x.size(), 13u);
-  EXPECT_EQ(stats.curves, 3);
-  EXPECT_DOUBLE_EQ(stats.x.front(), 2.0);
-  EXPECT_DOUBLE_EQ(stats.x.back(), 8.0);
-  const double std_slope = std::sqrt(((1 - 3.0) * (1 - 3.0) + 1 + 9) / 3.0);
-  for (std::size_t i = 0; i < stats.x.size(); ++i) {
-    const double x = stats.x[i];
-    EXPECT_NEAR(x, 2.0 + 0.5 * i, 1e-12);
-    EXPECT_NEAR(stats.mean[i], 3.0 * x, 1e-9);
-    EXPECT_NEAR(stats.std[i], std_slope * x, 1e-9);
-    EXPECT_NEAR(stats.min[i], 1.0 * x, 1e-9);
-    EXPECT_NEAR(stats.max[i], 6.0 * x, 1e-9);
-  }
-  // Ranges that do not overlap give no curve.
-  EXPECT_TRUE(aggregate_curves({Curve{{0, 1}, {0, 1}}, Curve{{2, 3}, {0, 1}}}).x.empty());
-}
-
 class SweepSummaries : public testing::ScratchDirectoryTest {
  protected:
   SweepSummaries() : ScratchDirectoryTest("sweep_summary") {}

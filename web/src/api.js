@@ -34,6 +34,10 @@ export const api = {
   index: () => getJson('api/index'),
   run: (path) => getJson(`api/run?path=${q(path)}`),
   csv: (path, offset = 0) => getJson(`api/csv?path=${q(path)}&offset=${offset}`),
+  // Runs grouped by seed with each group's mean, std and run count per point of `metric`
+  // ("eval", "eval:<column>" or a progress.csv column).
+  curves: (paths, metric, points = 200) =>
+    getJson(`api/curves?runs=${q(paths.join('|'))}&metric=${q(metric)}&points=${points}`),
   episode: (path, maxFrames = 2000) =>
     getJson(`api/episode?path=${q(path)}&max_frames=${maxFrames}`),
 };

@@ -142,6 +142,8 @@ try {
   check(!(await page.$$eval('.status', (badges) => badges.some((b) => b.textContent === 'live'))), 'nothing is called live');
   const sweeps = await page.$$eval('.sweep', (rows) => rows.map((r) => r.dataset.path));
   check(sweeps.length >= 1 && !sweeps.includes(''), `the sweep is listed, the served directory is not (${JSON.stringify(sweeps)})`);
+  const sweepText = await page.$eval('.sweep[data-path="sweep"]', (el) => el.textContent);
+  check(/\b3 runs in 1 group\b/.test(sweepText), `the sweep's three seeds are one group, as the server groups them (${sweepText.slice(0, 80)})`);
   const header = await page.$eval('header', (el) => el.textContent.replace(/\s+/g, ' ').trim());
   check(!/\bruns runs\b/.test(header) && header.includes('/'), `the header names the served directory once (${header})`);
   await statusIsClean(page, 'runs');

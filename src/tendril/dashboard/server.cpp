@@ -17,6 +17,7 @@
 #include "tendril/core/config.hpp"
 #include "tendril/core/episode_reader.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/run_curves.hpp"
 #include "tendril/dashboard/csv_slice.hpp"
 #include "tendril/dashboard/episode_json.hpp"
 #include "tendril/dashboard/json_writer.hpp"
@@ -194,6 +195,7 @@ struct Server::Impl {
     route("/api/index", [this](const httplib::Request&, httplib::Response& r) { index(r); });
     route("/api/run", [this](const httplib::Request& q, httplib::Response& r) { run(q, r); });
     route("/api/csv", [this](const httplib::Request& q, httplib::Response& r) { csv(q, r); });
+    route("/api/curves", [this](const httplib::Request& q, httplib::Response& r) { curves(q, r); });
     route("/api/episode",
           [this](const httplib::Request& q, httplib::Response& r) { episode(q, r); });
     route(R"(/files/(.*))", [this](const httplib::Request& q, httplib::Response& r) {
@@ -279,8 +281,12 @@ struct Server::Impl {
     for (const SweepEntry& sweep : found.sweeps) {
       json.begin_object().key("path").value(sweep.path).key("name").value(sweep.name);
       json.key("runs").begin_array();
-      for (const std::string& run : sweep.runs) json.value(run);
-      json.end_array();
+      std::vector<fs::path> runs;
+      for (const std::string& run : sweep.runs) {
+        json.value(run);
+        runs.push_back(root.path() / run);
+      }
+      json.end_array().key("groups").value(static_cast<int64_t>(group_by_seed(runs).size()));
       json.key("summary").value(sweep.summary).key("figures").begin_array();
       for (const std::string& figure : sweep.figures) json.value(figure);
       json.end_array().end_object();
@@ -317,8 +323,7 @@ struct Server::Impl {
       }
     } catch (const std::exception&) {  // the page shows the text as it is
     }
-    write_state(json,
-                read_run_state(root, directory, config ? &*config : nullptr, held_locks()));
+    write_state(json, read_run_state(root, directory, config ? &*config : nullptr, held_locks()));
     json.key("episodes").begin_array();
     for (const fs::path& file : episode_files(root, directory)) {
       json.begin_object().key("path").value(root.relative(file));
@@ -373,6 +378,64 @@ struct Server::Impl {
     json.end_array();
     json.key("problem_count").value(slice.problem_count);
     json.end_object();
+    reply_json(response, 200, json.str());
+  }
+
+  // One metric of several runs, the runs grouped by seed and each group's mean, spread and run
+  // count at every point (core/run_curves, as `tendril plot curves` and the sweep summaries
+  // compute them), over the span any of its runs covers: runs still training shorten nothing.
+  // `runs` holds the run directories separated by '|'; `metric` is "eval", "eval:<column>" or
+  // a progress.csv column.
+  void curves(const httplib::Request& request, httplib::Response& response) const {
+    if (!request.has_param("runs")) throw Refusal{400, "missing parameter 'runs'"};
+    if (!request.has_param("metric")) throw Refusal{400, "missing parameter 'metric'"};
+    const std::string metric = request.get_param_value("metric");
+    const uint64_t points = number_parameter(request, "points", 200);
+    if (points < 1 || points > 10000) throw Refusal{400, "points must be 1..10000"};
+    std::vector<fs::path> runs;
+    const std::string listed = request.get_param_value("runs");
+    for (std::size_t start = 0; start <= listed.size();) {
+      const std::size_t end = std::min(listed.find('|', start), listed.size());
+      const std::string relative = listed.substr(start, end - start);
+      start = end + 1;
+      if (relative.empty()) continue;
+      const fs::path directory = resolve(root, relative);
+      std::error_code error;
+      if (!fs::is_directory(directory, error) || !is_run_directory(root, directory)) {
+        throw Refusal{404, "not a run directory: " + relative};
+      }
+      runs.push_back(directory);
+    }
+    if (runs.empty()) throw Refusal{400, "no runs in parameter 'runs'"};
+    JsonWriter json;
+    json.begin_object().key("metric").value(metric).key("groups").begin_array();
+    for (const RunGroup& group : group_by_seed(runs)) {
+      std::vector<Curve> curves;
+      std::vector<std::string> problems;
+      json.begin_object().key("name").value(group.name).key("runs").begin_array();
+      for (const int i : group.members) {
+        json.value(root.relative(runs[i]));
+        // A run that has not written the file or column yet adds no curve, and says why.
+        try {
+          curves.push_back(read_run_curve(runs[i], metric));
+        } catch (const Error& e) {
+          problems.push_back(root.relative(runs[i]) + "/" +
+                             fs::path(e.where()).filename().string() + ": " + e.what_wrong());
+        }
+      }
+      json.end_array().key("problems").begin_array();
+      for (const std::string& problem : problems) json.value(problem);
+      json.end_array();
+      const CurveStats stats = aggregate_curves(curves, static_cast<int>(points), CurveSpan::kAny);
+      json.key("curves").value(stats.curves);
+      json.key("x").numbers(stats.x, 10).key("mean").numbers(stats.mean, 10);
+      json.key("std").numbers(stats.std, 10).key("min").numbers(stats.min, 10);
+      json.key("max").numbers(stats.max, 10);
+      json.key("count").begin_array();
+      for (const int n : stats.count) json.value(n);
+      json.end_array().end_object();
+    }
+    json.end_array().end_object();
     reply_json(response, 200, json.str());
   }
 

@@ -6,9 +6,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
-#include <numeric>
-#include <regex>
-#include <set>
 #include <sstream>
 
 #include "tendril/core/atomic_file.hpp"
@@ -21,75 +18,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// The numeric columns of a CSV file by header name; empty when the file is missing. Cells
-// that are not numbers read as NaN; a last line without its newline (a file being written)
-// and rows with the wrong number of cells are left out, as tendril_plot's read_csv does.
-std::map<std::string, std::vector<double>> read_columns(const fs::path& file) {
-  std::map<std::string, std::vector<double>> columns;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return columns;
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  text.erase(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
-  std::istringstream lines(text);
-  std::string line;
-  std::vector<std::string> header;
-  const auto split = [](const std::string& row) {
-    std::vector<std::string> cells;
-    std::string cell;
-    std::istringstream stream(row);
-    while (std::getline(stream, cell, ',')) cells.push_back(cell);
-    if (!row.empty() && row.back() == ',') cells.emplace_back();
-    return cells;
-  };
-  if (!std::getline(lines, line)) return columns;
-  header = split(line);
-  for (const std::string& name : header) columns[name];
-  while (std::getline(lines, line)) {
-    const std::vector<std::string> cells = split(line);
-    if (cells.size() != header.size() || cells == header) continue;
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      char* end = nullptr;
-      const double value = std::strtod(cells[i].c_str(), &end);
-      const bool whole = !cells[i].empty() && end != nullptr && *end == 0;
-      columns[header[i]].push_back(whole ? value : kNaN);
-    }
-  }
-  return columns;
-}
-
-const std::vector<double>& column(const std::map<std::string, std::vector<double>>& table,
-                                  const std::string& name) {
-  static const std::vector<double> none;
-  const auto found = table.find(name);
-  return found == table.end() ? none : found->second;
-}
-
-// The finite (x, y) pairs of two columns, sorted by x (stable).
-Curve curve_of(const std::vector<double>& x, const std::vector<double>& y) {
-  std::vector<std::pair<double, double>> points;
-  for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
-    if (std::isfinite(x[i]) && std::isfinite(y[i])) points.emplace_back(x[i], y[i]);
-  }
-  std::stable_sort(points.begin(), points.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  Curve curve;
-  for (const auto& [a, b] : points) {
-    curve.x.push_back(a);
-    curve.y.push_back(b);
-  }
-  return curve;
-}
-
-// Linear interpolation of a curve at x inside its range (numpy.interp).
-double interpolate(const Curve& c, double x) {
-  const auto upper = std::upper_bound(c.x.begin(), c.x.end(), x);
-  if (upper == c.x.begin()) return c.y.front();
-  if (upper == c.x.end()) return c.y.back();
-  const std::size_t j = static_cast<std::size_t>(upper - c.x.begin());
-  const double x0 = c.x[j - 1], x1 = c.x[j];
-  return x1 == x0 ? c.y[j] : c.y[j - 1] + (c.y[j] - c.y[j - 1]) * (x - x0) / (x1 - x0);
-}
 
 // The last part of the sweep's output directory (what holds its runs).
 std::string sweep_name(const Sweep& sweep) {
@@ -119,73 +47,15 @@ std::string curve_csv(const CurveStats& stats) {
 
 }  // namespace
 
-std::string seed_group(const std::string& run_name, const std::string& parent) {
-  static const std::regex seed_token("(^|[-_])seed_?[0-9]+", std::regex::icase);
-  static const std::regex time_stamp("[-_][0-9]{8}-[0-9]{6}$");
-  std::string stripped =
-      std::regex_replace(run_name, seed_token, "", std::regex_constants::format_first_only);
-  stripped = std::regex_replace(stripped, time_stamp, "");
-  const std::size_t first = stripped.find_first_not_of("-_");
-  if (first == std::string::npos) return parent.empty() ? "seeds" : parent;
-  stripped = stripped.substr(first, stripped.find_last_not_of("-_") - first + 1);
-  return stripped;
-}
-
-CurveStats aggregate_curves(const std::vector<Curve>& curves, int points) {
-  std::vector<const Curve*> present;
-  for (const Curve& c : curves) {
-    if (!c.x.empty()) present.push_back(&c);
-  }
-  CurveStats stats;
-  stats.curves = static_cast<int>(present.size());
-  if (present.empty()) return stats;
-  double start = -std::numeric_limits<double>::infinity();
-  double end = std::numeric_limits<double>::infinity();
-  for (const Curve* c : present) {
-    start = std::max(start, c->x.front());
-    end = std::min(end, c->x.back());
-  }
-  if (end < start) return stats;
-  const int count = end > start ? points : 1;
-  for (int i = 0; i < count; ++i) {
-    const double x = count == 1 ? start : start + (end - start) * i / (count - 1);
-    std::vector<double> values;
-    for (const Curve* c : present) values.push_back(interpolate(*c, x));
-    const Spread s = spread_of(values);
-    stats.x.push_back(x);
-    stats.mean.push_back(s.mean);
-    stats.std.push_back(s.std);
-    stats.min.push_back(s.min);
-    stats.max.push_back(s.max);
-  }
-  return stats;
-}
-
-Spread spread_of(const std::vector<double>& values) {
-  Spread s;
-  s.count = static_cast<int>(values.size());
-  if (values.empty()) {
-    s.mean = s.std = s.min = s.max = kNaN;
-    return s;
-  }
-  s.mean = std::accumulate(values.begin(), values.end(), 0.0) / s.count;
-  double squares = 0.0;
-  for (const double v : values) squares += (v - s.mean) * (v - s.mean);
-  s.std = std::sqrt(squares / s.count);
-  s.min = *std::min_element(values.begin(), values.end());
-  s.max = *std::max_element(values.begin(), values.end());
-  return s;
-}
-
 RunSummary summarize_run(const fs::path& directory) {
   RunSummary run;
   run.directory = directory;
   run.name = directory.filename().string();
   run.finished = fs::exists(directory / "model.policy");
-  const auto progress = read_columns(directory / "progress.csv");
-  const auto& steps = column(progress, "time/total_timesteps");
-  const auto& elapsed = column(progress, "time/time_elapsed");
-  const auto& fps = column(progress, "time/fps");
+  const auto progress = read_csv_columns(directory / "progress.csv");
+  const auto& steps = column_of(progress, "time/total_timesteps");
+  const auto& elapsed = column_of(progress, "time/time_elapsed");
+  const auto& fps = column_of(progress, "time/fps");
   if (!steps.empty() && std::isfinite(steps.back())) run.steps = static_cast<int64_t>(steps.back());
   // Each process's stretch ends where the clock restarts (a resume) or at the last row.
   double stretch_steps = 0.0;
@@ -197,15 +67,16 @@ RunSummary summarize_run(const fs::path& directory) {
     }
   }
   run.steps_per_second = run.seconds > 0.0 ? stretch_steps / run.seconds : kNaN;
-  run.train = curve_of(steps, column(progress, "rollout/ep_rew_mean"));
-  const auto evaluations = read_columns(directory / "eval.csv");
-  const auto& eval_steps = column(evaluations, "timesteps");
-  const auto& eval_mean = column(evaluations, "mean_return");
+  run.train = curve_of(steps, column_of(progress, "rollout/ep_rew_mean"));
+  const auto evaluations = read_csv_columns(directory / "eval.csv");
+  const auto& eval_steps = column_of(evaluations, "timesteps");
+  const auto& eval_mean = column_of(evaluations, "mean_return");
   run.eval = curve_of(eval_steps, eval_mean);
   if (!eval_mean.empty()) {
     run.final_eval_mean = eval_mean.back();
-    run.final_eval_std =
-        column(evaluations, "std_return").empty() ? kNaN : column(evaluations, "std_return").back();
+    run.final_eval_std = column_of(evaluations, "std_return").empty()
+                             ? kNaN
+                             : column_of(evaluations, "std_return").back();
     run.final_eval_steps = static_cast<int64_t>(eval_steps.back());
   }
   return run;

@@ -7,40 +7,13 @@
 #include <utility>
 #include <vector>
 
+#include "tendril/core/run_curves.hpp"
 #include "tendril/sweeps/sweep.hpp"
 
 namespace tendril::sweeps {
 
-// A run's name without its seed token, a trailing time stamp and the separators left at its ends,
-// the group of runs that differ only by seed: "n_steps_256-seed_3" → "n_steps_256",
-// "ppo_case1_seed0" → "ppo_case1", "seed_3-tau_0.01" → "tau_0.01", "ppo-seed1-20261128-093000"
-// → "ppo" (`tendril train`'s default name); a name that is only a seed ("seed_42") gives
-// `parent`, the name of the directory holding the run, or "seeds". The same rule as `tendril
-// plot curves` (python/tendril_plot, runs.seed_group) and the dashboard, so a sweep's tables
-// and figures group runs alike.
-std::string seed_group(const std::string& run_name, const std::string& parent = "");
-
-// A curve of one run: y against environment steps, x ascending.
-struct Curve {
-  std::vector<double> x, y;
-};
-
-// Mean, population standard deviation, minimum and maximum over curves at `points` evenly
-// spaced x values over the range every curve covers (so each point averages all of them), by
-// linear interpolation: the statistics `tendril plot curves` draws. Empty curves are left out;
-// `x` is empty when none is left or their ranges do not overlap.
-struct CurveStats {
-  std::vector<double> x, mean, std, min, max;
-  int curves = 0;
-};
-CurveStats aggregate_curves(const std::vector<Curve>& curves, int points = 200);
-
-// Mean, population standard deviation, minimum and maximum of numbers.
-struct Spread {
-  double mean = 0.0, std = 0.0, min = 0.0, max = 0.0;
-  int count = 0;
-};
-Spread spread_of(const std::vector<double>& values);
+// Seeds are grouped and their curves aggregated by core/run_curves (seed_group,
+// aggregate_curves, spread_of), as in `tendril plot curves` and the dashboard.
 
 // What a run directory holds, read from progress.csv and eval.csv.
 struct RunSummary {

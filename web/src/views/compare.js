@@ -1,7 +1,9 @@
 // Several runs on one chart: each run its own curve, or the seeds of each group as their mean
-// with a ± one-standard-deviation band.
+// with a ± one-standard-deviation band. The groups and their statistics come from the server
+// (/api/curves: core/run_curves, as `tendril plot curves` and the sweep summaries compute them);
+// the page smooths and draws them.
 import { api, LiveCsv } from '../api.js';
-import { aggregate, cleanCurve, seedGroup } from '../aggregate.js';
+import { cleanCurve } from '../curves.js';
 import { CurveChart, palette, smooth } from '../chart.js';
 import { compareHash, h, link, runHash, setStatus } from '../dom.js';
 
@@ -26,9 +28,10 @@ export async function showCompare(container, query) {
   groupBox.addEventListener('change', () => {
     location.hash = compareHash(paths, { group: groupBox.checked, metric });
   });
+  const redraw = () => draw().catch((e) => setStatus(e.message, true));
   metricSelect.addEventListener('change', () => {
     metric = metricSelect.value;
-    draw();
+    redraw();
   });
   const smoothing = h('input', {
     type: 'range', min: 0, max: 0.99, step: 0.01, 'aria-label': 'smoothing',
@@ -36,7 +39,7 @@ export async function showCompare(container, query) {
   });
   smoothing.addEventListener('input', () => {
     localStorage.setItem('tendril.smoothing', smoothing.value);
-    draw();
+    redraw();
   });
   const chartBox = h('div', { class: 'chart' });
   const legend = h('ul', { class: 'groups' });
@@ -50,8 +53,7 @@ export async function showCompare(container, query) {
   );
   const chart = new CurveChart(chartBox, { xLabel: 'environment steps', yLabel: metric, height: 380 });
 
-  // A run's curve of the metric, smoothed (each run before any mean over seeds); evaluations are
-  // few and are not smoothed.
+  // A run's own curve of the metric, smoothed; evaluations are few and are not smoothed.
   function curveOf(run) {
     if (metric === EVAL) {
       return cleanCurve(run.evaluation.column('timesteps') || [], run.evaluation.column('mean_return') || []);
@@ -60,7 +62,9 @@ export async function showCompare(container, query) {
     return { x: curve.x, y: smooth(curve.y, Number(smoothing.value)) };
   }
 
-  function draw() {
+  let drawn = 0;  // the latest draw: an older answer from the server arrives too late to show
+
+  async function draw() {
     const columns = new Set([EVAL]);
     runs.forEach((r) => r.progress.columns.forEach((c) => c !== 'time/total_timesteps' && columns.add(c)));
     if (metricSelect.options.length !== columns.size) {
@@ -68,23 +72,26 @@ export async function showCompare(container, query) {
     }
     metricSelect.value = metric;
     chart.options.yLabel = metric;
-
+    const ticket = ++drawn;
     const series = [];
     const rows = [];
     if (groupBox.checked) {
-      const groups = new Map();
-      for (const run of runs) {
-        const key = seedGroup(run.name, run.path.split('/').slice(-2, -1)[0]);
-        if (!groups.has(key)) groups.set(key, []);
-        groups.get(key).push(run);
-      }
-      [...groups.entries()].forEach(([key, members], i) => {
-        const stats = aggregate(members.map(curveOf));
+      const answer = await api.curves(paths, metric === EVAL ? 'eval' : metric);
+      if (ticket !== drawn) return;
+      const weight = Number(smoothing.value);
+      const byPath = new Map(runs.map((r) => [r.path, r]));
+      answer.groups.forEach((group, i) => {
         const color = palette[i % palette.length];
-        const label = `${key} (${members.length} seed${members.length === 1 ? '' : 's'})`;
-        series.push({ label, x: stats.x, y: stats.mean, lo: stats.lo, hi: stats.hi, color });
+        const seeds = group.runs.length;
+        const label = `${group.name} (${seeds} seed${seeds === 1 ? '' : 's'})`;
+        const band = (sign) => group.mean.map((m, k) => (m === null ? null : m + sign * group.std[k]));
+        series.push({
+          label, x: group.x, y: smooth(group.mean, weight), lo: smooth(band(-1), weight), hi: smooth(band(1), weight), color,
+        });
+        const members = group.runs.map((path) => byPath.get(path) || { path, name: path.split('/').pop() });
         rows.push(h('li', {}, h('span', { class: 'swatch', style: `background:${color}` }), label, ': ',
-          ...members.flatMap((m, k) => [k ? ', ' : '', link(runHash(m.path), m.name)])));
+          ...members.flatMap((m, k) => [k ? ', ' : '', link(runHash(m.path), m.name)]),
+          ...group.problems.map((p) => h('div', { class: 'problem' }, p))));
       });
     } else {
       runs.forEach((run, i) => {
@@ -104,10 +111,10 @@ export async function showCompare(container, query) {
       r.files.includes('progress.csv') ? r.progress.poll() : false,
       r.files.includes('eval.csv') ? r.evaluation.poll() : false,
     ]));
-    if (results.some(Boolean)) draw();
+    if (results.some(Boolean)) await draw();
   }
   await poll();
-  draw();
+  await draw();
   const timer = setInterval(() => poll().catch((e) => setStatus(e.message, true)), 3000);
   return {
     dispose() {

@@ -3,7 +3,6 @@
 import { api } from '../api.js';
 import { formatNumber, formatReadout } from '../chart.js';
 import { ago, compareHash, h, link, runHash, setStatus, summaryHash } from '../dom.js';
-import { seedGroup } from '../aggregate.js';
 
 // The status column: what the run's files say it is doing (the server reads them: a process
 // holding the run's lock, model.policy, checkpoints).
@@ -78,10 +77,9 @@ const COLUMNS = [
 ];
 
 function sweepRow(sweep) {
-  const groups = new Set(sweep.runs.map((p) => seedGroup(p.split('/').pop(), p.split('/').slice(-2, -1)[0])));
   const parts = [
     h('strong', {}, sweep.path || sweep.name),
-    ` — ${sweep.runs.length} run${sweep.runs.length === 1 ? '' : 's'} in ${groups.size} group${groups.size === 1 ? '' : 's'}: `,
+    ` — ${sweep.runs.length} run${sweep.runs.length === 1 ? '' : 's'} in ${sweep.groups} group${sweep.groups === 1 ? '' : 's'}: `,
     link(compareHash(sweep.runs, { group: true }), 'curves, mean ± std over seeds'),
     ' · ',
     link(compareHash(sweep.runs), 'every run'),
