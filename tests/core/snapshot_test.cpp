@@ -57,6 +57,43 @@ TEST(Snapshot, RoundTripsEveryKindOfValueExactly) {
   EXPECT_NO_THROW(in.expect_end());
 }
 
+// A part with one evolving value that restores itself all or nothing.
+struct OneValuePart {
+  double value = 0.0;
+  void save_state(SnapshotWriter& out) const {
+    out.section("part");
+    out.put(value);
+  }
+  void load_state(SnapshotReader& in) {
+    in.section("part");
+    value = in.get_double();
+  }
+};
+
+TEST(Snapshot, LoadAllOrNothingPutsThePartBackWhenTheRestCannotBeRead) {
+  Snapshot saved;
+  SnapshotWriter out(saved);
+  OneValuePart{2.0}.save_state(out);
+  out.put(7.0);  // the environment's own field after its part
+
+  OneValuePart part{1.0};
+  double field = 5.0;
+  SnapshotReader whole(saved);
+  load_all_or_nothing(part, whole, [&] { field = whole.get_double(); });
+  EXPECT_EQ(part.value, 2.0);
+  EXPECT_EQ(field, 7.0);
+
+  // Cut inside the field: the part had loaded, and is put back; the field is untouched.
+  part.value = 3.0;
+  field = 4.0;
+  const Snapshot cut(saved.begin(), saved.end() - 4);
+  SnapshotReader short_read(cut);
+  EXPECT_THROW(load_all_or_nothing(part, short_read, [&] { field = short_read.get_double(); }),
+               Error);
+  EXPECT_EQ(part.value, 3.0);
+  EXPECT_EQ(field, 4.0);
+}
+
 TEST(Snapshot, MismatchesNameTheSection) {
   Snapshot bytes;
   SnapshotWriter out(bytes);

@@ -87,4 +87,24 @@ class SnapshotReader {
   std::string section_ = "(start)";
 };
 
+// An environment's load_state all or nothing: loads `part` (a body, an arm, a plant: anything
+// with save_state/load_state that restores itself all or nothing) from `in`, then runs
+// `read_rest`, which reads the environment's other fields into copies and only then assigns
+// them. If either throws, `part` is put back as it was and the error goes on, so a damaged or
+// foreign snapshot leaves the environment exactly as it was.
+template <typename Part, typename ReadRest>
+void load_all_or_nothing(Part& part, SnapshotReader& in, ReadRest&& read_rest) {
+  Snapshot before;
+  SnapshotWriter writer(before);
+  part.save_state(writer);
+  part.load_state(in);
+  try {
+    read_rest();
+  } catch (...) {
+    SnapshotReader restore(before);
+    part.load_state(restore);
+    throw;
+  }
+}
+
 }  // namespace tendril

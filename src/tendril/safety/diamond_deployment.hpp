@@ -7,8 +7,12 @@
 #include <vector>
 
 #include "tendril/core/config.hpp"
+#include "tendril/core/env.hpp"
+#include "tendril/envs/sma_limb/learned_safety_env.hpp"
 
 namespace tendril::safety {
+
+class SafetyCritic;
 
 // Seed 001's limb experiment (thesis §6.5, Figs. 6.6–6.7): a scripted nominal sequence that
 // traces a diamond — u1 3 s, u4 3 s, u3 6 s, u2 12 s, u1 6 s, u3 3 s (the thesis' order; the
@@ -40,6 +44,13 @@ struct DiamondOptions {
 // run's environment's.
 std::vector<DiamondTrial> run_diamond(const std::filesystem::path& critic_run,
                                       const DiamondOptions& options);
+
+// One trial: `limb` (SmaLimb/Robot-v0: readings [θx, θy, t_s]) reset with `seed` runs the diamond
+// through the filter of `critic` at ε₂ = `epsilon`, with the safe radius and horizon of `task`,
+// through the policy runner (the filtered sequence is a policy, the trace an observer).
+DiamondTrial run_diamond_trial(Env& limb, const SafetyCritic& critic,
+                               const envs::sma_limb::LearnedSafetyEnv::Params& task, double epsilon,
+                               uint64_t seed);
 
 // The diamond's move (0–3, u1–u4) at `seconds` after the start, or −1 once it is over (33 s).
 int diamond_move(double seconds);

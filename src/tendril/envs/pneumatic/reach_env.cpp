@@ -178,11 +178,7 @@ void ReachEnv::save_state(SnapshotWriter& out) const {
 
 void ReachEnv::load_state(SnapshotReader& in) {
   in.section(setup_.id);
-  Snapshot before;
-  SnapshotWriter writer(before);
-  dynamics_->save_state(writer);
-  dynamics_->load_state(in);
-  try {
+  load_all_or_nothing(*dynamics_, in, [&] {
     ChamberVector command;
     TipVector tips;
     Observation last = last_observation_;
@@ -195,11 +191,7 @@ void ReachEnv::load_state(SnapshotReader& in) {
     tips_ = tips;
     last_observation_ = std::move(last);
     info_ = std::move(info);
-  } catch (...) {
-    SnapshotReader restore(before);
-    dynamics_->load_state(restore);
-    throw;
-  }
+  });
 }
 
 bool ReachEnv::describe_scene(Scene& scene) const {

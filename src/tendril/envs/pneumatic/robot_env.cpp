@@ -110,22 +110,14 @@ void RobotEnv::save_state(SnapshotWriter& out) const {
 
 void RobotEnv::load_state(SnapshotReader& in) {
   in.section(kId);
-  Snapshot arm_before;
-  SnapshotWriter arm_writer(arm_before);
-  arm_.save_state(arm_writer);
-  arm_.load_state(in);
-  try {
+  load_all_or_nothing(arm_, in, [&] {
     Observation last = last_observation_;
     in.get_matrix(last);
     Info info = info_;
     for (const auto& entry : info_.entries()) info.set(entry.first, in.get_double());
     last_observation_ = std::move(last);
     info_ = std::move(info);
-  } catch (...) {
-    SnapshotReader restore(arm_before);
-    arm_.load_state(restore);
-    throw;
-  }
+  });
 }
 
 bool RobotEnv::describe_scene(Scene& scene) const {

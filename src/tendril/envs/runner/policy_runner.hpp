@@ -20,8 +20,9 @@ struct RunSettings {
   // `seed`.
   uint64_t seed = 0;
   bool deterministic = true;  // the policy's mode; false samples
-  // Stop politely after the current step when it returns true (a caught Ctrl-C): the episode
-  // running then counts as cut short.
+  // Stop politely after the current step when it returns true (a caught Ctrl-C, or a scripted
+  // experiment whose sequence is over, e.g. safety::run_diamond_trial): the episode running then
+  // counts as cut short.
   std::function<bool()> stop_requested;
 };
 

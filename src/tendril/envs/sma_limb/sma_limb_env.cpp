@@ -145,11 +145,7 @@ void SmaLimbEnv::save_state(SnapshotWriter& out) const {
 
 void SmaLimbEnv::load_state(SnapshotReader& in) {
   in.section(kId);
-  Snapshot before;
-  SnapshotWriter writer(before);
-  robot_->save_state(writer);
-  robot_->load_state(in);
-  try {
+  load_all_or_nothing(*robot_, in, [&] {
     Rng rng = rng_;
     in.get(rng);
     Eigen::Vector2d angles = angles_deg_;
@@ -163,11 +159,7 @@ void SmaLimbEnv::load_state(SnapshotReader& in) {
     time_s_ = time;
     failed_ = failed;
     info_ = std::move(info);
-  } catch (...) {
-    SnapshotReader restore(before);
-    robot_->load_state(restore);
-    throw;
-  }
+  });
 }
 
 bool SmaLimbEnv::describe_scene(Scene& scene) const {

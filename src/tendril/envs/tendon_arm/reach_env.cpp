@@ -103,11 +103,7 @@ void ReachEnv::save_state(SnapshotWriter& out) const {
 
 void ReachEnv::load_state(SnapshotReader& in) {
   in.section(setup_.id);
-  Snapshot before;
-  SnapshotWriter before_writer(before);
-  plant_->save_state(before_writer);
-  plant_->load_state(in);
-  try {
+  load_all_or_nothing(*plant_, in, [&] {
     Rng rng = rng_;
     in.get(rng);
     Eigen::Vector3d goal, tip;
@@ -125,11 +121,7 @@ void ReachEnv::load_state(SnapshotReader& in) {
     tensions_ = tensions;
     goal_tensions_ = goal_tensions;
     info_ = std::move(info);
-  } catch (...) {
-    SnapshotReader restore(before);
-    plant_->load_state(restore);
-    throw;
-  }
+  });
 }
 
 bool ReachEnv::describe_scene(Scene& scene) const {

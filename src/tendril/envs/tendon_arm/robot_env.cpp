@@ -100,11 +100,7 @@ void RobotEnv::save_state(SnapshotWriter& out) const {
 
 void RobotEnv::load_state(SnapshotReader& in) {
   in.section(kId);
-  Snapshot before;
-  SnapshotWriter before_writer(before);
-  rod_.save_state(before_writer);
-  rod_.load_state(in);
-  try {
+  load_all_or_nothing(rod_, in, [&] {
     Eigen::VectorXd tensions = tensions_;
     in.get_matrix(tensions);
     Observation last = last_observation_;
@@ -114,11 +110,7 @@ void RobotEnv::load_state(SnapshotReader& in) {
     tensions_ = tensions;
     last_observation_ = std::move(last);
     info_ = std::move(info);
-  } catch (...) {
-    SnapshotReader restore(before);
-    rod_.load_state(restore);
-    throw;
-  }
+  });
 }
 
 bool RobotEnv::describe_scene(Scene& scene) const {

@@ -196,12 +196,7 @@ void Ur5Reach::save_state(SnapshotWriter& out) const {
 
 void Ur5Reach::load_state(SnapshotReader& in) {
   in.section(kId);
-  // The arm restores itself all or nothing; the rest is read into copies first.
-  Snapshot arm_before;
-  SnapshotWriter arm_writer(arm_before);
-  arm_.save_state(arm_writer);
-  arm_.load_state(in);
-  try {
+  load_all_or_nothing(arm_, in, [&] {
     Eigen::Vector3d target;
     in.get_matrix(target);
     Rng rng = rng_;
@@ -218,11 +213,7 @@ void Ur5Reach::load_state(SnapshotReader& in) {
     total_steps_ = total_steps;
     last_observation_ = std::move(last_observation);
     info_ = std::move(info);
-  } catch (...) {
-    SnapshotReader restore(arm_before);
-    arm_.load_state(restore);
-    throw;
-  }
+  });
 }
 
 bool Ur5Reach::describe_scene(Scene& scene) const {
