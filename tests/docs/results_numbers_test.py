@@ -115,6 +115,25 @@ def pneumatic_open_loop_spread():
             [f"({min(distances):.1f}–{max(distances):.1f} mm over the {len(distances)} trials"])
 
 
+def beam_variants():
+    """Seed 003's variants (early termination; case 1 from case 2): per experiment, --set keys and
+    steps, the mean over seeds and each seed's value, from variants.csv."""
+    groups = {}
+    for row in rows("beam/variants.csv"):
+        groups.setdefault((row["config"], row["overrides"], row["steps"]), []).append(row)
+    expected = []
+    for (_, _, steps), runs in groups.items():
+        def spread(key, digits):
+            values = [float(run[key]) for run in runs]
+            each = ", ".join(f"{value:.{digits}f}" for value in values)
+            return f"{statistics.mean(values):.{digits}f} ({each})"
+        velocity = statistics.mean(float(run["velocity_error_m_s"]) for run in runs)
+        walls = ", ".join(run["wall_s"] for run in runs)
+        expected.append(minus(f"| {int(steps) // 1000}k | {spread('mean_distance_m', 3)} | "
+                              f"{velocity:.3g} | {spread('reward_per_step', 2)} | {walls} |"))
+    return "beam.md", "beam/variants.csv", expected
+
+
 # --- The headline tables -------------------------------------------------------------------------
 
 HEADLINE_HEADING = "## Headline numbers"
@@ -380,6 +399,15 @@ def headline_sma_limb_rl():
     ]
 
 
+def headline_beam():
+    """Case 1 started from case 2's model, at the seed's 300k steps, from variants.csv."""
+    distances = [float(row["mean_distance_m"]) for row in rows("beam/variants.csv")
+                 if row["config"] == "trajectory_case1_from_case2_sac.yaml"
+                 and row["steps"] == "300000"]
+    return [("beam.md", "task 2, case 1: mean tip distance", "beam/variants.csv",
+             f"{statistics.mean(distances):.3f} m from case 2's model ({len(distances)} seeds")]
+
+
 def headline_implicit_rods():
     name, source = "implicit_rods.md", "implicit_rods/accuracy.csv"
     table = [row for row in rows(source) if row["integrator"] != "verlet"]
@@ -412,7 +440,7 @@ def headline_implicit_rods():
 
 HEADLINE_CHECKS = (headline_safety_filter, headline_pneumatic_adaptation, headline_pneumatic_arm,
                    headline_learned_dynamics, headline_sma_limb, headline_sma_limb_rl,
-                   headline_implicit_rods)
+                   headline_implicit_rods, headline_beam)
 
 
 def check_headlines():
@@ -444,7 +472,7 @@ def check_headlines():
 
 
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
-          learned_dynamics_baselines, pneumatic_open_loop_spread)
+          learned_dynamics_baselines, pneumatic_open_loop_spread, beam_variants)
 
 
 def main():
