@@ -173,6 +173,10 @@ int collect_data(const Config& config, const std::string& task) {
   table.set("seed", std::to_string(seed));
   table.set("hold_readings", std::to_string(settings.hold_readings));
   table.set("cutoff_cooldown_s", number(settings.cutoff_cooldown_s));
+  // A twin re-damped for a study is another limb: its data set says so.
+  if (env_config.has("damping_rate")) {
+    table.set("damping_rate_per_s", number(env_config.get<double>("damping_rate")));
+  }
   table.set("config", config.source());
   data::write_limb_data_set(output, table);
   std::printf("wrote %s\n", output.c_str());

@@ -47,6 +47,16 @@ std::unique_ptr<Env> SmaLimbEnv::create(const Config& params) {
       throw Error(e.what_wrong(), params.source() + ": integrator");
     }
   }
+  // The silicone's viscous loss (SmaLimbSpec::damping_rate, 1/s): the limb's own unless a
+  // study of the twin's damping sets it (docs/results/learned_dynamics.md).
+  if (params.has("damping_rate")) {
+    spec.damping_rate = params.get<double>("damping_rate");
+    if (!(std::isfinite(spec.damping_rate) && spec.damping_rate >= 0.0)) {
+      throw Error("damping_rate must be finite and non-negative (1/s), got " +
+                      std::to_string(spec.damping_rate),
+                  params.where("damping_rate"));
+    }
+  }
   const uint64_t seed = params.get_or<uint64_t>("seed", 0);
   // Data sets, models, policies and critics all come from the calibrated limb (its PWM table,
   // its sensor's zero offsets removed). A limb built on the nominal table with raw readings is
@@ -192,6 +202,10 @@ EnvDescription SmaLimbEnv::description() {
       .parameters = {{"limb", "", "stiff or soft (seed 001's two limbs)"},
                      {"tip_mass", "kg", "mass hung at the tip"},
                      {"integrator", "", "the twin's rod integrator; default the limb's own", true},
+                     {"damping_rate", "1/s",
+                      "the twin's viscous loss, every rate decaying at it; default the limb's own "
+                      "(15)",
+                      true},
                      {"seed", "", "random stream of the first reset without a seed"},
                      {"calibration", "",
                       "required: a file of `tendril data calibrate`, or none "
