@@ -173,9 +173,13 @@ int collect_data(const Config& config, const std::string& task) {
   table.set("seed", std::to_string(seed));
   table.set("hold_readings", std::to_string(settings.hold_readings));
   table.set("cutoff_cooldown_s", number(settings.cutoff_cooldown_s));
-  // A twin re-damped for a study is another limb: its data set says so.
+  // A twin re-damped or with another phase model, for a study, is another limb: its data set
+  // says so.
   if (env_config.has("damping_rate")) {
     table.set("damping_rate_per_s", number(env_config.get<double>("damping_rate")));
+  }
+  if (env_config.has("phase_reentry")) {
+    table.set("phase_reentry", env_config.get<std::string>("phase_reentry"));
   }
   table.set("config", config.source());
   data::write_limb_data_set(output, table);

@@ -193,6 +193,28 @@ TEST(SmaLimbEnvDamping, IsTheLimbsOwnUnlessSet) {
   }
 }
 
+// phase_reentry: resume is the twin's own phase model (the committed data sets'), reading for
+// reading; continuous is another limb; anything else is refused naming the key.
+TEST(SmaLimbEnvPhaseReentry, IsTheTwinsOwnUnlessSet) {
+  const auto readings = [](const std::string& extra) {
+    auto env = make("SmaLimb/Robot-v0", Config::parse("limb: stiff\ncalibration: none\n" + extra));
+    std::vector<Observation> observations{env->reset(5)};
+    // Heat +x for 3.9 s, off for 4 readings (the wire cools, staying above Ms), heat again: the
+    // coil re-enters its heating branch at a temperature it had passed.
+    for (int k = 0; k < 100; ++k) {
+      observations.push_back(env->step(throttles(k < 60 || k >= 64 ? 5 : 0, 0)).observation);
+    }
+    return observations;
+  };
+  const auto own = readings("");
+  EXPECT_EQ(own, readings("phase_reentry: resume\n"));
+  EXPECT_NE(own, readings("phase_reentry: continuous\n"));
+  const std::string message = error_message([] {
+    make("SmaLimb/Robot-v0", Config::parse("calibration: none\nphase_reentry: jump", "limb.yaml"));
+  });
+  EXPECT_NE(message.find("limb.yaml: phase_reentry"), std::string::npos) << message;
+}
+
 // Everything downstream (data, models, policies, critics) came from the calibrated limb, so no
 // robot is built on a default calibration: a missing one is an Error naming the key and how to
 // make one, on the twin and over the bridge alike (before any port is opened).

@@ -57,6 +57,17 @@ std::unique_ptr<Env> SmaLimbEnv::create(const Config& params) {
                   params.where("damping_rate"));
     }
   }
+  // How the coils' phase continues on a re-entered branch (physics::PhaseReentry): resume, the
+  // twin's own, or continuous.
+  if (params.has("phase_reentry")) {
+    const std::string reentry = params.get<std::string>("phase_reentry");
+    if (reentry != "resume" && reentry != "continuous") {
+      throw Error("phase_reentry must be resume or continuous, got '" + reentry + "'",
+                  params.where("phase_reentry"));
+    }
+    spec.actuator.coil.phase_reentry = reentry == "continuous" ? physics::PhaseReentry::kContinuous
+                                                               : physics::PhaseReentry::kResume;
+  }
   const uint64_t seed = params.get_or<uint64_t>("seed", 0);
   // Data sets, models, policies and critics all come from the calibrated limb (its PWM table,
   // its sensor's zero offsets removed). A limb built on the nominal table with raw readings is
@@ -205,6 +216,10 @@ EnvDescription SmaLimbEnv::description() {
                      {"damping_rate", "1/s",
                       "the twin's viscous loss, every rate decaying at it; default the limb's own "
                       "(15)",
+                      true},
+                     {"phase_reentry", "",
+                      "resume (the twin's own: a coil's phase branch re-entered at another "
+                      "temperature jumps) or continuous (it never moves against the temperature)",
                       true},
                      {"seed", "", "random stream of the first reset without a seed"},
                      {"calibration", "",

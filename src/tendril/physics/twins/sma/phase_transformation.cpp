@@ -1,5 +1,6 @@
 #include "tendril/physics/twins/sma/phase_transformation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -47,8 +48,10 @@ PhaseState PhaseState::rested(double temperature) {
   return state;
 }
 
-void update_phase(const TransformationTemperatures& t, PhaseState& state, double temperature) {
+void update_phase(const TransformationTemperatures& t, PhaseState& state, double temperature,
+                  PhaseReentry reentry) {
   if (temperature == state.temperature) return;
+  const double before = state.martensite;
   const bool heating = temperature > state.temperature;
   if (heating != state.heating) {
     PhaseState::Anchor& left = state.heating ? state.heating_anchor : state.cooling_anchor;
@@ -73,6 +76,10 @@ void update_phase(const TransformationTemperatures& t, PhaseState& state, double
                                                      (cooling_curve(t, temperature) - at_anchor) /
                                                      (1.0 - at_anchor)
                            : 1.0;
+  }
+  if (reentry == PhaseReentry::kContinuous) {
+    state.martensite =
+        heating ? std::min(before, state.martensite) : std::max(before, state.martensite);
   }
   state.temperature = temperature;
 }

@@ -50,9 +50,18 @@ struct PhaseState {
   static PhaseState rested(double temperature);
 };
 
+// How a branch re-entered with ξ unchanged continues. kResume (the twin's default, with which
+// its data sets were made) evaluates the branch from its old anchor at the new temperature; when
+// the coil re-enters it at another temperature — heated again after cooling above Ms, cooled
+// again after heating below As — ξ jumps to the branch's value there, against the temperature's
+// direction (heating raising ξ by up to ≈ 0.6 in one step; docs/results/learned_dynamics.md).
+// kContinuous keeps ξ where it is until the branch's curve passes it: heating never raises ξ and
+// cooling never lowers it, and the fraction is continuous in time.
+enum class PhaseReentry { kResume, kContinuous };
+
 // Moves `state` to the new temperature `temperature` (°C) along its branch, turning round first
 // if the temperature moved the other way.
 void update_phase(const TransformationTemperatures& temperatures, PhaseState& state,
-                  double temperature);
+                  double temperature, PhaseReentry reentry = PhaseReentry::kResume);
 
 }  // namespace tendril::physics

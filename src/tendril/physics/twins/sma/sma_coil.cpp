@@ -48,7 +48,7 @@ CoilTensionLaw coil_tension_law(const SmaCoilSpec& spec, const SmaCoilState& sta
 void advance_coil(const SmaCoilSpec& spec, const CoilThermal& thermal, SmaCoilState& state,
                   double duty, double h) {
   thermal.advance(state.wire_temperature, state.body_temperature, spec.thermal.power(duty), h);
-  update_phase(spec.transformation, state.phase, state.wire_temperature);
+  update_phase(spec.transformation, state.phase, state.wire_temperature, spec.phase_reentry);
   const double excess = state.wire_temperature - spec.damage_temperature;
   if (excess > 0.0) {
     state.degradation = std::min(1.0, state.degradation + spec.damage_rate * excess * h);

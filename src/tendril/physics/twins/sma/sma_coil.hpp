@@ -31,6 +31,9 @@ struct SmaCoilSpec {
   double prestretch = 0.0;             // s₀, m
   double damage_temperature = 150.0;   // °C
   double damage_rate = 2.5e-4;         // 1/(K·s)
+  // How a re-entered phase branch continues (phase_transformation.hpp); the twin's data sets
+  // were made with kResume.
+  PhaseReentry phase_reentry = PhaseReentry::kResume;
 
   void validate() const;
 };
