@@ -107,6 +107,51 @@ def learned_dynamics_baselines():
     return "learned_dynamics.md", "learned_dynamics/table4_*_baselines.csv", expected
 
 
+def learned_dynamics_twin_damping():
+    """The twin's damping: its free response and steps per damping rate (damping_summary.csv),
+    and persistence on the 10 min exploration data sets (persistence_10min.csv) and the committed
+    test split (persistence_stiff_test.csv)."""
+    def number(text, digits, scale=1.0):
+        value = float(text)
+        return "—" if math.isnan(value) else f"{scale * value:.{digits}f}"
+
+    directory = os.path.join("learned_dynamics", "twin_damping")
+    summary = rows(os.path.join(directory, "damping_summary.csv"))
+    expected = []
+    zeta = {}
+    for row in summary:
+        rate = row["damping_rate_per_s"]
+        zeta[rate] = number(row["zeta_rayleigh"], 2)
+        expected.append(
+            f"| {rate} | {number(row['release_frequency_hz'], 2)} | "
+            f"{number(row['release_zeta'], 2)} / {number(row['release_zeta_full'], 2)} | "
+            f"{zeta[rate]} | {number(row['release_undershoot'], 1, 100)} % | "
+            f"{number(row['release_settle_2pct_s'], 2)} s | "
+            f"{number(row['step_sampled_largest_domega_deg_s'], 1)} | "
+            f"{number(row['staircase_persistence_change_deg_s'], 1)} / "
+            f"{number(row['staircase_persistence_steady_deg_s'], 1)} |")
+    default = next(row["damping_rate_per_s"] for row in summary
+                   if float(row["damping_rate_per_s"]) == 15)
+    data = rows(os.path.join(directory, "persistence_stiff_test.csv"))
+    data += rows(os.path.join(directory, "persistence_10min.csv"))
+    for row in data:
+        continuous = row["data_set"].startswith("continuous_")
+        rate = row["data_set"].removeprefix("rate_").removeprefix("continuous_")
+        label = {"stiff_exploration": "15, committed test split (30 min)",
+                 "default": "15 (the twin's own)"}.get(rate, rate)
+        if continuous:
+            label = ("15" if rate == "default" else rate) + ", continuous phase"
+        key = default if rate in ("stiff_exploration", "default") else rate
+        expected.append(
+            f"| {label} | {zeta[key]} | {row['persistence_rmse_omega']} | "
+            f"{row['persistence_rmse_omega_input_change']} | "
+            f"{row['persistence_rmse_omega_steady_input']} | "
+            f"{number(row['largest_1pct_share'], 0, 100)} % | "
+            f"{row['persistence_rmse_omega_without_largest_1pct']} | "
+            f"{row['raw_jumps_over_30deg']} | {number(row['share_rate_beyond_80'], 1, 100)} % |")
+    return "learned_dynamics.md", directory + "/*.csv", expected
+
+
 def pneumatic_open_loop_spread():
     """The open-loop trials' range of final distances (Fig. 7 counterpart)."""
     distances = [float(row["goal_distance_mm"])
@@ -472,7 +517,8 @@ def check_headlines():
 
 
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
-          learned_dynamics_baselines, pneumatic_open_loop_spread, beam_variants)
+          learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
+          beam_variants)
 
 
 def main():
