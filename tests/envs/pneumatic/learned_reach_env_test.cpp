@@ -1,12 +1,15 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
 #include "tendril/core/error.hpp"
+#include "tendril/core/rng.hpp"
 #include "tendril/envs/learned/model_loader.hpp"
 #include "tendril/envs/pneumatic/linear_arm_model.hpp"
 #include "tendril/envs/pneumatic/model_dynamics.hpp"
@@ -164,6 +167,100 @@ TEST(LearnedReach, RestJitterGivesRepeatableStartsPerSeed) {
   EXPECT_GT(shift, 1.0);
   EXPECT_LT(shift, 4.0 * 6.0);
   EXPECT_THROW(ReachEnv::create_on_model(Config::parse("rest_jitter_mm: -1\n")), Error);
+}
+
+// Without initial_offset_mm (or with 0) the start is the one it was before the key existed:
+// the rest, and with rest_jitter_mm the same nine normal draws of the jitter's stream (11) as
+// before, so every earlier result repeats bit for bit.
+TEST(LearnedReach, NoInitialOffsetKeepsTheEarlierStarts) {
+  auto plain = ReachEnv::create_on_model(Config::parse("{}"));
+  auto zero = ReachEnv::create_on_model(Config::parse("initial_offset_mm: 0\n"));
+  EXPECT_EQ(plain->reset(7), zero->reset(7));
+  EXPECT_EQ(as_reach(*zero).tips(), LinearArmModel::rest());
+  zero->reset();
+  EXPECT_EQ(as_reach(*zero).tips(), LinearArmModel::rest());
+  for (int t = 0; t < 20; ++t) {
+    const Action action = delta_on((4 * t) % 9, (t % 2 == 0) ? 0.3f : -0.1f);
+    EXPECT_EQ(plain->step(action).observation, zero->step(action).observation) << t;
+  }
+  auto jittered =
+      ReachEnv::create_on_model(Config::parse("rest_jitter_mm: 4.0\ninitial_offset_mm: 0\n"));
+  jittered->reset(3);
+  Rng stream(3, 11);
+  TipVector expected = LinearArmModel::rest();
+  for (int i = 0; i < 9; ++i) expected[i] += 4.0 * stream.normal();
+  EXPECT_EQ(as_reach(*jittered).tips(), expected);
+}
+
+// initial_offset_mm: each module's rest tip moves by at most the radius, the same seed gives the
+// same start, other seeds other starts, and the draws fill the ball (some come near its edge).
+TEST(LearnedReach, InitialOffsetMovesEachTipWithinTheRadiusRepeatablyPerSeed) {
+  constexpr double kRadius = 40.0;
+  auto env = ReachEnv::create_on_model(Config::parse("initial_offset_mm: 40\n"));
+  auto twin = ReachEnv::create_on_model(Config::parse("initial_offset_mm: 40\n"));
+  const TipVector rest = LinearArmModel::rest();
+  std::vector<TipVector> starts;
+  double largest = 0.0, smallest = kRadius;
+  for (uint64_t seed = 0; seed < 50; ++seed) {
+    EXPECT_EQ(env->reset(seed), twin->reset(seed)) << seed;
+    const TipVector start = as_reach(*env).tips();
+    for (int module = 0; module < 3; ++module) {
+      const double shift = (start - rest).segment<3>(3 * module).norm();
+      EXPECT_LE(shift, kRadius) << seed;
+      largest = std::max(largest, shift);
+      smallest = std::min(smallest, shift);
+    }
+    for (const TipVector& earlier : starts) EXPECT_NE(start, earlier) << seed;
+    starts.push_back(start);
+  }
+  // 150 uniform draws in the ball: P(all within 0.8 r) = 0.512^150, P(none within 0.5 r) =
+  // 0.875^150, both below 1e-8.
+  EXPECT_GT(largest, 0.8 * kRadius);
+  EXPECT_LT(smallest, 0.5 * kRadius);
+  // An unseeded reset continues the stream: another start again.
+  env->reset(2);
+  const TipVector seeded = as_reach(*env).tips();
+  env->reset();
+  EXPECT_NE(as_reach(*env).tips(), seeded);
+  // The episode runs from the shifted window: the first observation shows the shifted tips.
+  auto plain = ReachEnv::create_on_model(Config::parse("{}"));
+  EXPECT_NE(env->reset(4), plain->reset(4));
+}
+
+// A snapshot taken mid-episode with an offset restores the window and the stream: the rest of
+// the episode and the next (unseeded) start repeat bit for bit.
+TEST(LearnedReach, ASnapshotWithAnInitialOffsetRepeatsTheEpisodeAndTheNextStart) {
+  auto env = make(ReachEnv::kModelId, Config::parse("task: G2\ninitial_offset_mm: 25\n"));
+  env->reset(9);
+  for (int t = 0; t < 5; ++t) env->step(delta_on(t % 9, 0.2f));
+  Snapshot snapshot;
+  SnapshotWriter writer(snapshot);
+  env->save_state(writer);
+  std::vector<Observation> first;
+  for (int t = 0; t < 8; ++t) first.push_back(env->step(delta_on((3 * t) % 9, -0.1f)).observation);
+  first.push_back(env->reset());
+  SnapshotReader reader(snapshot);
+  env->load_state(reader);
+  for (int t = 0; t < 8; ++t) {
+    EXPECT_EQ(env->step(delta_on((3 * t) % 9, -0.1f)).observation, first[t]) << t;
+  }
+  EXPECT_EQ(env->reset(), first.back());
+}
+
+TEST(LearnedReach, RefusesABadInitialOffset) {
+  // A negative radius is refused by the environment, a non-finite one already by the config.
+  for (const auto& [bad, why] :
+       std::vector<std::pair<const char*, const char*>>{{"initial_offset_mm: -1\n", "non-negative"},
+                                                        {"initial_offset_mm: .nan\n", "finite"},
+                                                        {"initial_offset_mm: .inf\n", "finite"}}) {
+    const std::string message =
+        testing::error_message([&] { ReachEnv::create_on_model(Config::parse(bad)); });
+    EXPECT_NE(message.find("initial_offset_mm"), std::string::npos) << bad << ": " << message;
+    EXPECT_NE(message.find(why), std::string::npos) << bad << ": " << message;
+  }
+  EXPECT_THROW(ReachEnv::create_on_model(Config::parse("initial_offset_mm: far\n")), Error);
+  EXPECT_THROW(ModelDynamics(std::make_shared<LinearArmModel>(), LinearArmModel::rest(), 0.0, -2.0),
+               Error);
 }
 
 TEST(LearnedReach, ASnapshotRepeatsTheEpisodeBitForBit) {

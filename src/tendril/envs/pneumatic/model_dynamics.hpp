@@ -17,13 +17,17 @@ namespace tendril::envs::pneumatic {
 // positive: then each reset moves every rest coordinate by N(0, rest_jitter_mm²), from a stream
 // a seeded reset restarts ("different trajectories can be obtained, even when executing the
 // policy in the deterministic mode, by changing the initial conditions of the dynamics model",
-// seed 002 §IV-B).
+// seed 002 §IV-B). `initial_offset_mm` (also off by default) moves each module's rest tip by
+// an offset drawn uniformly from the ball of that radius, from the same stream after the
+// jitter: the twin's resting drift moves the hanging arm between trials by up to its cap
+// (40 mm at module 3, docs/results/pneumatic_arm.md), and Fig. 7's caption reports the policy
+// run "even with different initial conditions" of the model.
 class ModelDynamics final : public ArmDynamics {
  public:
   // Raises Error unless the model maps 9 tips and 9 pressures to 9 tips, `rest_mm` is finite
-  // and the jitter is non-negative.
+  // and the jitter and offset are finite and non-negative.
   ModelDynamics(std::shared_ptr<DynamicsModel> model, const TipVector& rest_mm,
-                double rest_jitter_mm = 0.0);
+                double rest_jitter_mm = 0.0, double initial_offset_mm = 0.0);
 
   TipVector reset(std::optional<uint64_t> seed) override;
   TipVector step(const ChamberVector& pressures_bar) override;
@@ -54,6 +58,7 @@ class ModelDynamics final : public ArmDynamics {
   TipVector tips_;
   bool finite_ = true;
   double rest_jitter_mm_;
+  double initial_offset_mm_;
   Rng jitter_rng_;
 };
 

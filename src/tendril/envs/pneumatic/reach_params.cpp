@@ -132,7 +132,12 @@ std::unique_ptr<Env> ReachEnv::create_on_model(const Config& params) {
   if (!(std::isfinite(jitter) && jitter >= 0.0)) {
     throw Error("must be finite and non-negative", key_where(params, "rest_jitter_mm"));
   }
-  auto dynamics = std::make_unique<ModelDynamics>(std::move(model), rest, jitter);
+  const double offset = params.get_or<double>("initial_offset_mm", 0.0);
+  if (!(std::isfinite(offset) && offset >= 0.0)) {
+    throw Error("must be finite and non-negative (mm), not " + std::to_string(offset),
+                key_where(params, "initial_offset_mm"));
+  }
+  auto dynamics = std::make_unique<ModelDynamics>(std::move(model), rest, jitter, offset);
   std::unique_ptr<RobotHistoryModel> history = model_history(*dynamics);
   return std::make_unique<ReachEnv>(std::move(setup), std::move(dynamics), std::move(history));
 }
@@ -203,7 +208,10 @@ EnvDescription ReachEnv::model_description() {
         true},
        {"rest_mm", "mm", "the 9 tips with every chamber vented, where episodes start", true},
        {"rest_from", "", "else a pneumatic data set whose first row is the rest", true},
-       {"rest_jitter_mm", "mm", "noise on the rest at each reset"}});
+       {"rest_jitter_mm", "mm", "noise on the rest at each reset"},
+       {"initial_offset_mm", "mm",
+        "each module tip's rest moved at each reset by a uniform draw from the ball of this "
+        "radius (the twin's drift: 40)"}});
 }
 
 }  // namespace tendril::envs::pneumatic
