@@ -160,6 +160,30 @@ def pneumatic_open_loop_spread():
             [f"({min(distances):.1f}–{max(distances):.1f} mm over the {len(distances)} trials"])
 
 
+def pneumatic_initial_offset():
+    """The closed-loop trials on the twin of the policies trained from one rest and from varied
+    starts (initial_offset_mm), one row per policy: its best evaluation in the model (eval_*.csv,
+    the one save_best kept) and its episodes on the twin (closed_loop_*.csv)."""
+    expected = []
+    for start, prefix in (("one rest", "rest"), ("rest + up to 40 mm", "offset40")):
+        for seed in (0, 1, 2):
+            trials = rows(f"pneumatic_arm/initial_offset/closed_loop_{prefix}_seed{seed}.csv")
+            success = [float(row["is_success"]) for row in trials]
+            collision = [float(row["collision"]) for row in trials]
+            neither = [1.0 - s - c for s, c in zip(success, collision)]
+            shares = " / ".join(f"{100 * statistics.mean(v):.0f}" for v in
+                                (success, collision, neither))
+            distance = mean_sd([float(row["goal_distance_mm"]) for row in trials], 1)
+            length = statistics.mean(float(row["length"]) for row in trials)
+            evaluations = rows(f"pneumatic_arm/initial_offset/eval_{prefix}_seed{seed}.csv")
+            best = max(evaluations, key=lambda row: float(row["mean_return"]))
+            in_model = (f"{int(best['timesteps']) // 1000} k: "
+                        f"{100 * float(best['success_rate']):.0f} % of {best['episodes']}")
+            expected.append(f"| {start} | {seed} | {in_model} | {shares} % ({len(trials)} trials) "
+                            f"| {distance} | {length:.1f} |")
+    return "pneumatic_arm.md", "pneumatic_arm/initial_offset/*.csv", expected
+
+
 def beam_variants():
     """Seed 003's variants (early termination; case 1 from case 2): per experiment, --set keys and
     steps, the mean over seeds and each seed's value, from variants.csv."""
@@ -518,7 +542,7 @@ def check_headlines():
 
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
           learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
-          beam_variants)
+          beam_variants, pneumatic_initial_offset)
 
 
 def main():
