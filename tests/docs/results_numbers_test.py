@@ -203,6 +203,18 @@ def beam_variants():
     return "beam.md", "beam/variants.csv", expected
 
 
+def pneumatic_ppo_collapse():
+    """The PPO collapse experiment: every variant's row as ppo_collapse.py builds it from
+    ppo_collapse.csv."""
+    script = os.path.join(RESULTS, "pneumatic_arm", "ppo_collapse.py")
+    done = subprocess.run([sys.executable, script, "--table",
+                           os.path.join(RESULTS, "pneumatic_arm", "ppo_collapse.csv")],
+                          capture_output=True, text=True, check=True)
+    expected = [line for line in done.stdout.splitlines() if line.startswith("| ")]
+    assert len(expected) >= 2, done.stdout
+    return "pneumatic_arm.md", "pneumatic_arm/ppo_collapse.csv", expected
+
+
 # --- The headline tables -------------------------------------------------------------------------
 
 HEADLINE_HEADING = "## Headline numbers"
@@ -542,7 +554,7 @@ def check_headlines():
 
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
           learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
-          beam_variants, pneumatic_initial_offset)
+          beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse)
 
 
 def main():
