@@ -154,10 +154,6 @@ void read_sweep_log(const fs::path& file, SweepSummary& summary) {
   }
 }
 
-std::string parent_name(const fs::path& run) {
-  return fs::absolute(run).lexically_normal().parent_path().filename().string();
-}
-
 }  // namespace
 
 SweepSummary summarize_sweep(const Sweep& sweep) {
@@ -199,9 +195,9 @@ std::vector<fs::path> run_directories(const std::vector<fs::path>& paths) {
 
 SweepSummary summarize_runs(const std::vector<fs::path>& runs) {
   SweepSummary summary;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    summary.runs.push_back(summarize_run(runs[i]));
-    add_to_configuration(summary, i, seed_group(summary.runs[i].name, parent_name(runs[i])), {});
+  for (const fs::path& run : runs) summary.runs.push_back(summarize_run(run));
+  for (const RunGroup& group : group_by_seed(runs)) {
+    for (const int i : group.members) add_to_configuration(summary, i, group.name, {});
   }
   aggregate_configurations(summary);
   summary.wall_seconds = kNaN;
