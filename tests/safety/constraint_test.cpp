@@ -37,5 +37,21 @@ TEST(Constraint, DubinsCarAndEnvironmentsWithoutOne) {
   EXPECT_THROW(constraint_of(pendulum), Error);
 }
 
+// With the margin observed, unsafe samples carry their own margin, and the positions drawn are
+// those of the plain car's stream (the extra entry draws nothing).
+TEST(Constraint, DubinsCarUnsafeSamplesCarryTheObservedMargin) {
+  auto plain = constraint_of(*envs::make("Safety/DubinsCar-v0"));
+  auto with =
+      constraint_of(*envs::make("Safety/DubinsCar-v0", Config::parse("observe_margin: true")));
+  Rng a(5), b(5);
+  for (int i = 0; i < 100; ++i) {
+    const Observation o = with->sample_unsafe(a), p = plain->sample_unsafe(b);
+    ASSERT_EQ(o.size(), 6);
+    EXPECT_EQ(o.head(5), p);
+    EXPECT_LE(o[5], 0.0f);
+    EXPECT_NEAR(o[5], with->margin(o), 1e-6);
+  }
+}
+
 }  // namespace
 }  // namespace tendril::safety

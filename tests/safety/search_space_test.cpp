@@ -52,6 +52,12 @@ TEST(SearchSpace, DubinsCarPlacesPositionAndHeading) {
   EXPECT_NEAR(step.observation[1], -1.0 + 1.2 * 0.05, 1e-6);
   Rng rng(1);
   for (int k = 0; k < 100; ++k) EXPECT_LE(space->sample(rng).cwiseAbs().maxCoeff(), 1.0);
+  // With observe_margin the searched states carry their margin: 0.5 m to the wall at (1.5, −1).
+  auto observed = envs::make("Safety/DubinsCar-v0", Config::parse("observe_margin: true"));
+  const Observation y = search_space_of(*observed)->observation(s);
+  ASSERT_EQ(y.size(), 6);
+  EXPECT_EQ(y.head(5), x);
+  EXPECT_NEAR(y[5], 0.5, 1e-6);
 }
 
 // The limb's safety task (on the torch-free stand-in model): (θx, θy, θ̇x, θ̇y) over the 30° radius.

@@ -128,6 +128,27 @@ TEST(DubinsCar, AScriptedOrbitKeepsEveryStartSafe) {
   }
 }
 
+TEST(DubinsCar, ObserveMarginAppendsTheSafetyMargin) {
+  DubinsCar::Params plain;
+  DubinsCar::Params params = plain;
+  params.observe_margin = true;
+  DubinsCar with(params), without(plain);
+  ASSERT_EQ(with.observation_space().size(), 6);
+  EXPECT_FLOAT_EQ(with.observation_space().high()[5], 2.0f - 3.0f / (1.0f + std::sqrt(2.0f)));
+  // The same episode: the first five entries are the plain car's, the sixth the margin of the
+  // position observed (0.5 m from the disc at (1.5, 0); beyond the wall at (2.5, 0)).
+  Observation a = with.reset(3), b = without.reset(3);
+  EXPECT_EQ(a.head(5), b);
+  EXPECT_FLOAT_EQ(a[5], static_cast<float>(DubinsCar::safety_margin(params, a[0], a[1])));
+  with.set_state(1.5, 0.0, 0.0);
+  a = with.step(Action::Constant(1, 0.0f)).observation;
+  EXPECT_NEAR(a[5], 0.5 - 1.2 * 0.05, 1e-6);  // a step of 6 cm towards the wall
+  with.set_state(2.5, 0.0, 0.0);
+  const Step outside = with.step(Action::Constant(1, 0.0f));
+  EXPECT_NEAR(outside.observation[5], -0.56, 1e-6);
+  EXPECT_NEAR(outside.info.get("safety_margin"), outside.observation[5], 1e-6);
+}
+
 }  // namespace
 }  // namespace tendril::envs::safe_control
 
@@ -166,7 +187,7 @@ TEST(DubinsCar, DiscreteSpeedsPairEveryTurnRateWithEverySpeedLevel) {
   const auto index = [](int k) { return Action::Constant(1, static_cast<float>(k)); };
   EXPECT_DOUBLE_EQ(env.turn_rate(index(0)), -2.0);
   EXPECT_DOUBLE_EQ(env.commanded_speed(index(0)), 0.0);
-  EXPECT_DOUBLE_EQ(env.turn_rate(index(5)), 2.0);  // k mod 3 = 2
+  EXPECT_DOUBLE_EQ(env.turn_rate(index(5)), 2.0);        // k mod 3 = 2
   EXPECT_DOUBLE_EQ(env.commanded_speed(index(5)), 0.6);  // k div 3 = 1
   EXPECT_DOUBLE_EQ(env.turn_rate(index(7)), 0.0);
   EXPECT_DOUBLE_EQ(env.commanded_speed(index(7)), 1.2);
@@ -179,9 +200,30 @@ TEST(DubinsCar, DiscreteSpeedsPairEveryTurnRateWithEverySpeedLevel) {
   EXPECT_THROW(env.step(index(9)), Error);
   EXPECT_THROW(DubinsCar::create(Config::parse("speed_control: true\ndiscrete_speeds: 3")), Error);
   EXPECT_THROW(DubinsCar::create(Config::parse("discrete_actions: 3\ndiscrete_speeds: 3")), Error);
-  EXPECT_THROW(
-      DubinsCar::create(Config::parse("speed_control: true\ndiscrete_actions: 3\ndiscrete_speeds: 1")),
-      Error);
+  EXPECT_THROW(DubinsCar::create(
+                   Config::parse("speed_control: true\ndiscrete_actions: 3\ndiscrete_speeds: 1")),
+               Error);
+}
+
+TEST(DubinsCar, ObserveMarginAppendsTheSafetyMargin) {
+  DubinsCar::Params plain;
+  DubinsCar::Params params = plain;
+  params.observe_margin = true;
+  DubinsCar with(params), without(plain);
+  ASSERT_EQ(with.observation_space().size(), 6);
+  EXPECT_FLOAT_EQ(with.observation_space().high()[5], 2.0f - 3.0f / (1.0f + std::sqrt(2.0f)));
+  // The same episode: the first five entries are the plain car's, the sixth the margin of the
+  // position observed (0.5 m from the disc at (1.5, 0); beyond the wall at (2.5, 0)).
+  Observation a = with.reset(3), b = without.reset(3);
+  EXPECT_EQ(a.head(5), b);
+  EXPECT_FLOAT_EQ(a[5], static_cast<float>(DubinsCar::safety_margin(params, a[0], a[1])));
+  with.set_state(1.5, 0.0, 0.0);
+  a = with.step(Action::Constant(1, 0.0f)).observation;
+  EXPECT_NEAR(a[5], 0.5 - 1.2 * 0.05, 1e-6);  // a step of 6 cm towards the wall
+  with.set_state(2.5, 0.0, 0.0);
+  const Step outside = with.step(Action::Constant(1, 0.0f));
+  EXPECT_NEAR(outside.observation[5], -0.56, 1e-6);
+  EXPECT_NEAR(*outside.info.get("safety_margin"), outside.observation[5], 1e-6);
 }
 
 }  // namespace

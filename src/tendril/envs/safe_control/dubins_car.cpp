@@ -35,6 +35,7 @@ std::unique_ptr<Env> DubinsCar::create(const Config& params) {
   p.unsafe_penalty = params.get_or("unsafe_penalty", p.unsafe_penalty);
   p.speed_control = params.get_or("speed_control", p.speed_control);
   p.min_speed = params.get_or("min_speed", p.min_speed);
+  p.observe_margin = params.get_or("observe_margin", p.observe_margin);
   params.reject_unknown();
   return std::make_unique<DubinsCar>(p);
 }
@@ -68,9 +69,14 @@ DubinsCar::DubinsCar(Params params) : params_(params) {
           "the start box must lie in the safe set", who);
   // Unbounded position: the last step of an episode ends beyond the absolute box.
   const float inf = std::numeric_limits<float>::infinity();
-  Eigen::VectorXf low(5), high(5);
-  low << -inf, -inf, -1.0f, -1.0f, 0.0f;
-  high << inf, inf, 1.0f, 1.0f, 1.0f;
+  const int size = params_.observe_margin ? 6 : 5;
+  Eigen::VectorXf low(size), high(size);
+  low.head(5) << -inf, -inf, -1.0f, -1.0f, 0.0f;
+  high.head(5) << inf, inf, 1.0f, 1.0f, 1.0f;
+  if (params_.observe_margin) {  // d ≤ max d, and unbounded below beyond the walls
+    low[5] = -inf;
+    high[5] = static_cast<float>(max_safety_margin(params_));
+  }
   observation_space_ = Space::box(low, high);
   if (params_.discrete_actions > 0) {
     action_space_ =
@@ -180,12 +186,18 @@ void DubinsCar::set_state(double x, double y, double heading, int elapsed_steps)
   elapsed_steps_ = elapsed_steps;
 }
 
-Observation DubinsCar::observe() const {
-  Observation o(5);
-  o << static_cast<float>(x_), static_cast<float>(y_), static_cast<float>(std::cos(heading_)),
-      static_cast<float>(std::sin(heading_)),
-      static_cast<float>(elapsed_steps_) / static_cast<float>(params_.horizon);
+Observation DubinsCar::observation_of(const Params& params, double x, double y, double heading,
+                                      float time_fraction) {
+  Observation o(params.observe_margin ? 6 : 5);
+  o.head(5) << static_cast<float>(x), static_cast<float>(y), static_cast<float>(std::cos(heading)),
+      static_cast<float>(std::sin(heading)), time_fraction;
+  if (params.observe_margin) o[5] = static_cast<float>(safety_margin(params, x, y));
   return o;
+}
+
+Observation DubinsCar::observe() const {
+  return observation_of(params_, x_, y_, heading_,
+                        static_cast<float>(elapsed_steps_) / static_cast<float>(params_.horizon));
 }
 
 void DubinsCar::save_state(SnapshotWriter& out) const {
@@ -216,7 +228,10 @@ EnvDescription DubinsCar::description() {
                       {"position y", "m"},
                       {"cos ψ (heading from the x axis)", "1"},
                       {"sin ψ", "1"},
-                      {"elapsed fraction of the horizon t/T", "1"}},
+                      {"elapsed fraction of the horizon t/T", "1"},
+                      {"with observe_margin: the safety margin d, min(box − |x|, box − |y|, ‖p‖ − "
+                       "obstacle_radius)",
+                       "m"}},
       .action = {{"turn rate ω, |ω| ≤ max_turn_rate (speed_control: then the speed v, one more "
                   "entry; discrete_actions ≥ 2: one index)",
                   "rad/s"}},
@@ -248,7 +263,9 @@ EnvDescription DubinsCar::description() {
                      {"start_anywhere", "", "start anywhere in the safe set instead"},
                      {"unsafe_penalty", "1", "subtracted from the reward of unsafe steps"},
                      {"speed_control", "", "the action is [ω, v], v in [min_speed, speed]"},
-                     {"min_speed", "m/s", "lowest speed with speed_control"}},
+                     {"min_speed", "m/s", "lowest speed with speed_control"},
+                     {"observe_margin", "",
+                      "the observation gets a sixth entry: the safety margin d (m)"}},
   };
 }
 

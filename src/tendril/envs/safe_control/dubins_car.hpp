@@ -22,7 +22,8 @@ namespace tendril::envs::safe_control {
 // absolute box. Task: reach the goal disc at (1.8, 1.8) m of radius 0.5 m, whose shortest path
 // from the lower-left starts crosses the keep-out disc: reward −w_d ‖p' − g‖ + bonus inside it.
 //
-// Observation [x, y, cos ψ, sin ψ, t/T] (time in the state for eq. 6.3). Info: "safety_margin"
+// Observation [x, y, cos ψ, sin ψ, t/T] (time in the state for eq. 6.3), with observe_margin
+// also d (below). Info: "safety_margin"
 // d = min(2 − |x|, 2 − |y|, ‖p‖ − 1) (m), "cost"/"unsafe" 1 where d ≤ 0, "is_success" 1 in the
 // goal disc.
 //
@@ -69,6 +70,10 @@ class DubinsCar : public Env, public SafetyTask {
     double unsafe_penalty = 0.0;
     bool speed_control = false;  // the action is [ω, v] with v in [min_speed, speed]
     double min_speed = 0.0;      // m/s
+    // A sixth observation entry: the safety margin d (m, below), so that a critic can read the
+    // distance to the constraint instead of learning the disc and the walls from (x, y). Not in
+    // the thesis; an input feature tried against its parked filter (docs/results/safety_filter.md).
+    bool observe_margin = false;
   };
   static std::unique_ptr<Env> create(const Config& params);
   // The environment in words, for `tendril list envs --describe` (env_description.hpp).
@@ -99,6 +104,9 @@ class DubinsCar : public Env, public SafetyTask {
 
   // d of eq. (6.4), m: the smallest distance to the box walls and to the disc.
   static double safety_margin(const Params& params, double x, double y);
+  // The observation [x, y, cos ψ, sin ψ, t/T] (and d with observe_margin) of a state.
+  static Observation observation_of(const Params& params, double x, double y, double heading,
+                                    float time_fraction);
   // max d over the safe set. For |x| ≥ |y| the wall distance is x_max − |x| and the disc
   // distance at most √2|x| − r, reached on the diagonal; equal there at a = (x_max + r)/(1 + √2),
   // so max d = x_max − a (0.757 m for the default geometry).

@@ -22,13 +22,14 @@ class DubinsCarConstraint : public SafetyConstraint {
   }
   int64_t horizon() const override { return params_.horizon; }
   Observation sample_unsafe(Rng& rng) const override {
-    Observation o(5);
     const double a = params_.absolute_limit;
-    do {
+    Observation o;
+    do {  // the draws in the order the five-entry observation always took them
       const double heading = rng.uniform(-std::numbers::pi, std::numbers::pi);
-      o << static_cast<float>(rng.uniform(-a, a)), static_cast<float>(rng.uniform(-a, a)),
-          static_cast<float>(std::cos(heading)), static_cast<float>(std::sin(heading)),
+      const double x = rng.uniform(-a, a), y = rng.uniform(-a, a);
+      const float time =
           static_cast<float>(rng.below(params_.horizon + 1)) / static_cast<float>(params_.horizon);
+      o = DubinsCar::observation_of(params_, x, y, heading, time);
     } while (!unsafe(o));
     return o;
   }
@@ -42,17 +43,14 @@ class DubinsCarConstraint : public SafetyConstraint {
 class DubinsCarSpace : public SafetySearchSpace {
  public:
   explicit DubinsCarSpace(const DubinsCar::Params& params)
-      : names_{"x", "y", "heading"}, scales_(3) {
+      : params_(params), names_{"x", "y", "heading"}, scales_(3) {
     scales_ << params.box_limit, params.box_limit, std::numbers::pi;
   }
   const std::vector<std::string>& names() const override { return names_; }
   const Eigen::VectorXd& scales() const override { return scales_; }
   Observation observation(const Eigen::VectorXd& s) const override {
-    const double heading = s[2] * scales_[2];
-    Observation o(5);
-    o << static_cast<float>(s[0] * scales_[0]), static_cast<float>(s[1] * scales_[1]),
-        static_cast<float>(std::cos(heading)), static_cast<float>(std::sin(heading)), 0.0f;
-    return o;
+    return DubinsCar::observation_of(params_, s[0] * scales_[0], s[1] * scales_[1],
+                                     s[2] * scales_[2], 0.0f);
   }
   void place(Env& env, const Eigen::VectorXd& s) const override {
     auto* car = find_wrapper<DubinsCar>(env);
@@ -66,6 +64,7 @@ class DubinsCarSpace : public SafetySearchSpace {
   }
 
  private:
+  DubinsCar::Params params_;
   std::vector<std::string> names_;
   Eigen::VectorXd scales_;
 };
