@@ -128,27 +128,6 @@ TEST(DubinsCar, AScriptedOrbitKeepsEveryStartSafe) {
   }
 }
 
-TEST(DubinsCar, ObserveMarginAppendsTheSafetyMargin) {
-  DubinsCar::Params plain;
-  DubinsCar::Params params = plain;
-  params.observe_margin = true;
-  DubinsCar with(params), without(plain);
-  ASSERT_EQ(with.observation_space().size(), 6);
-  EXPECT_FLOAT_EQ(with.observation_space().high()[5], 2.0f - 3.0f / (1.0f + std::sqrt(2.0f)));
-  // The same episode: the first five entries are the plain car's, the sixth the margin of the
-  // position observed (0.5 m from the disc at (1.5, 0); beyond the wall at (2.5, 0)).
-  Observation a = with.reset(3), b = without.reset(3);
-  EXPECT_EQ(a.head(5), b);
-  EXPECT_FLOAT_EQ(a[5], static_cast<float>(DubinsCar::safety_margin(params, a[0], a[1])));
-  with.set_state(1.5, 0.0, 0.0);
-  a = with.step(Action::Constant(1, 0.0f)).observation;
-  EXPECT_NEAR(a[5], 0.5 - 1.2 * 0.05, 1e-6);  // a step of 6 cm towards the wall
-  with.set_state(2.5, 0.0, 0.0);
-  const Step outside = with.step(Action::Constant(1, 0.0f));
-  EXPECT_NEAR(outside.observation[5], -0.56, 1e-6);
-  EXPECT_NEAR(outside.info.get("safety_margin"), outside.observation[5], 1e-6);
-}
-
 }  // namespace
 }  // namespace tendril::envs::safe_control
 
