@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "tendril/core/error.hpp"
 
 namespace tendril::envs::sma_limb {
@@ -36,6 +38,23 @@ TEST(PowerProxy, SettlesAtTheBalanceOfHeatingAndCooling) {
   EXPECT_NEAR(proxy.power()[3], 100.0 / 0.6, 1e-6);
   EXPECT_NEAR(proxy.bound(10.0), 100.0 / 0.6, 1e-12);
   EXPECT_EQ(proxy.power()[1], 0.0);
+}
+
+// The thesis' Fig. A.4: from p₀ ≈ 1600, throttles off, a coil cools by (1 − kΔt) per step, so
+// after t seconds p = p₀ (1 − kΔt)^(t/Δt); at k = 0.2 that leaves 0.24 % after 30 s ("cools to
+// around room temperature in 30 seconds"). docs/results/sma_limb_rl/power_cooling.py plots these
+// curves.
+TEST(PowerProxy, CoolsAsTheClosedFormOfFigA4) {
+  for (const double k : {0.05, 0.1, 0.2, 0.5, 1.0}) {
+    PowerProxy proxy(PowerProxy::Params{.cooling_rate = k});
+    proxy.update(std::sqrt(1600.0 * 3.0 / 0.075), 0.0);  // one step: u²/R · Δt = 1600
+    ASSERT_NEAR(proxy.power()[0], 1600.0, 1e-9);
+    for (int step = 1; step <= 400; ++step) {  // 30 s
+      proxy.update(0.0, 0.0);
+      ASSERT_NEAR(proxy.power()[0], 1600.0 * std::pow(1.0 - k * 0.075, step), 1e-9) << "k " << k;
+    }
+    if (k == 0.2) EXPECT_LT(proxy.power()[0] / 1600.0, 0.0025);
+  }
 }
 
 TEST(PowerProxy, SnapshotRoundTripIsExact) {
