@@ -83,6 +83,34 @@ def safety_filter_baselines():
             [f"(safety rates {means[0]:.3f} and {means[1]:.3f}, the means over the 10 seeds"])
 
 
+def safety_filter_margin_feature():
+    """The Dubins co-training with and without the margin input: the means over the seeds of
+    margin_feature.csv, as the page's table rows give them."""
+    table = rows("safety_filter/margin_feature.csv")
+
+    def mean(variant, column):
+        return statistics.mean(float(row[column]) for row in table if row["variant"] == variant)
+
+    def both(formats):
+        return " | ".join(formats(variant) for variant in ("plain", "margin"))
+
+    def pair(returns, safety):
+        return lambda v: minus(f"{mean(v, returns):.2f} / {mean(v, safety):.3f}")
+
+    expected = [
+        "| filtered return / safety at ε₂ = 0 | "
+        + both(pair("filtered_return_eps0", "filtered_safety_rate_eps0")) + " |",
+        "| filtered return / safety at Algorithm 3's ε₂ | "
+        + both(pair("filtered_return", "filtered_safety_rate")) + " |",
+        "| task agent alone: return / safety | "
+        + both(pair("task_return", "task_safety_rate")) + " |",
+        "| V > 0 on the slice: ring / disc / outside the walls | "
+        + both(lambda v: " / ".join(f"{mean(v, c):.2f}" for c in (
+            "v_positive_ring", "v_positive_disc", "v_positive_outside"))) + " |",
+    ]
+    return "safety_filter.md", "safety_filter/margin_feature.csv", expected
+
+
 def learned_dynamics_baselines():
     """Tables 4.1-4.2: the predict-no-change row and the velocity split by throttle change."""
     expected = []
@@ -552,7 +580,7 @@ def check_headlines():
     return failures, len(tables), checked
 
 
-CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
+CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines, safety_filter_margin_feature,
           learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
           beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse)
 
