@@ -111,6 +111,33 @@ def safety_filter_margin_feature():
     return "safety_filter.md", "safety_filter/margin_feature.csv", expected
 
 
+def signed(value):
+    """A return as the pages write it: sign, thousands separator, U+2212."""
+    return minus(f"{value:+,.0f}")
+
+
+def elastica_buffer_studies():
+    """The scaled replay-buffer studies of case 1 (Fig. 3): per buffer the seeds' final training
+    means, the configuration's final evaluation (mean ± population std) and each seed's, read
+    from the committed sweep summaries."""
+    expected = []
+    for study in ("tracking3d_ddpg_buffer_size_reduced",):
+        folder = f"elastica/studies/{study}"
+        runs = rows(f"{folder}/runs.csv")
+        for configuration in rows(f"{folder}/configurations.csv"):
+            buffer = int(configuration["algo.buffer_size"])
+            seeds = sorted((run for run in runs
+                            if run["configuration"] == configuration["configuration"]),
+                           key=lambda run: run["run"])
+            paper = {20000: "100k", 100000: "500k", 400000: "2M"}[buffer]
+            train = " / ".join(signed(float(run["final_train_mean"])) for run in seeds)
+            final = " / ".join(signed(float(run["final_eval_mean"])) for run in seeds)
+            mean = signed(float(configuration["final_eval_mean"]))
+            std = f"{float(configuration['final_eval_std']):,.0f}"
+            expected.append(f"| {buffer // 1000}k ({paper}) | {train} | {mean} ± {std} | {final} |")
+    return "elastica.md", "elastica/studies/*/", expected
+
+
 def learned_dynamics_baselines():
     """Tables 4.1-4.2: the predict-no-change row and the velocity split by throttle change."""
     expected = []
@@ -582,7 +609,7 @@ def check_headlines():
 
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines, safety_filter_margin_feature,
           learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
-          beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse)
+          beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse, elastica_buffer_studies)
 
 
 def main():

@@ -69,6 +69,7 @@ TEST_F(SweepSummaries, RunStepsPerSecondAddsTheStretchesOfEveryProcess) {
   EXPECT_EQ(run.final_eval_steps, 650);
   EXPECT_EQ(run.train.x, (std::vector<double>{100, 200, 350, 650}));
   EXPECT_EQ(run.train.y, (std::vector<double>{-5, -4, -3, -1}));
+  EXPECT_EQ(*run.final_train_mean, -1.0);
 }
 
 // Configurations of known final evaluations: n_steps 64 over seeds with 1, 2, 3 (mean 2, std
@@ -130,6 +131,10 @@ TEST_F(SweepSummaries, ConfigurationsAreMeansAndSpreadsOverSeeds) {
             std::string::npos);
   EXPECT_NE(table.find("n_steps_64,64,3,3,2,0.8164965809,1,3,"), std::string::npos) << table;
   EXPECT_NE(table.find("n_steps_128,128,3,2,15,5,10,20,"), std::string::npos) << table;
+  // Each run's last training return beside its final evaluation: run 0 ends at 1 × 1000.
+  const std::string runs_csv = read(directory_ / "out" / "summary" / "runs.csv");
+  EXPECT_NE(runs_csv.find(",final_eval_mean,final_eval_std,final_train_mean\n"), std::string::npos);
+  EXPECT_NE(runs_csv.find(",1000,1,1,1000\n"), std::string::npos) << runs_csv;
   const std::string page = read(directory_ / "out" / "summary" / "summary.md");
   EXPECT_NE(page.find("| n_steps_64 | 64 | 3 / 3 | 2.00 ± 0.82 | 1.00 | 3.00 |"), std::string::npos)
       << page;

@@ -68,6 +68,7 @@ RunSummary summarize_run(const fs::path& directory) {
   }
   run.steps_per_second = run.seconds > 0.0 ? stretch_steps / run.seconds : kNaN;
   run.train = curve_of(steps, column_of(progress, "rollout/ep_rew_mean"));
+  if (!run.train.y.empty()) run.final_train_mean = run.train.y.back();
   const auto evaluations = read_csv_columns(directory / "eval.csv");
   const auto& eval_steps = column_of(evaluations, "timesteps");
   const auto& eval_mean = column_of(evaluations, "mean_return");
@@ -299,7 +300,7 @@ void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary, const 
   }
   std::string runs_csv =
       "run,configuration,finished,steps,seconds,steps_per_second,final_eval_steps,"
-      "final_eval_mean,final_eval_std\n";
+      "final_eval_mean,final_eval_std,final_train_mean\n";
   std::string runs_table =
       "| run | finished | steps | training time (s) | steps/s | final evaluation |\n"
       "|---|---|---|---|---|---|\n";
@@ -309,7 +310,8 @@ void write_sweep_summary(const Sweep& sweep, const SweepSummary& summary, const 
                 number(r.seconds, "%.3f") + "," + number(r.steps_per_second, "%.2f") + "," +
                 (r.final_eval_mean ? std::to_string(r.final_eval_steps) : "") + "," +
                 number(r.final_eval_mean.value_or(kNaN), "%.10g") + "," +
-                number(r.final_eval_std.value_or(kNaN), "%.10g") + "\n";
+                number(r.final_eval_std.value_or(kNaN), "%.10g") + "," +
+                number(r.final_train_mean.value_or(kNaN), "%.10g") + "\n";
     runs_table += "| " + r.name + " | " + (r.finished ? "yes" : "no") + " | " +
                   std::to_string(r.steps) + " | " + number(r.seconds, "%.1f") + " | " +
                   number(r.steps_per_second, "%.0f") + " | " +

@@ -28,6 +28,9 @@ struct RunSummary {
   // The last eval.csv row (a finished run's evaluation at its end).
   std::optional<double> final_eval_mean, final_eval_std;
   int64_t final_eval_steps = 0;
+  // The training return where the run stopped: the last finite rollout/ep_rew_mean (the mean
+  // return of the last 100 training episodes).
+  std::optional<double> final_train_mean;
   Curve train;  // rollout/ep_rew_mean against time/total_timesteps
   Curve eval;   // eval.csv's mean_return against timesteps
 };
