@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "collect_support.hpp"
+#include "tendril/control/state_filter.hpp"
 #include "tendril/core/data_table.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/core/snapshot.hpp"
@@ -196,7 +197,7 @@ int open_loop(const Config& config) {
     table.set("ema_alpha", number(ema_alpha));
     table.set("config", config.source());
     table.values.resize(static_cast<Eigen::Index>(log.size()), data::kUy + 1);
-    data::StateFilter filter(ema_alpha);
+    control::StateFilter filter(ema_alpha);
     for (std::size_t k = 0; k < log.size(); ++k) {
       const Eigen::Vector4d state = filter.update(log.time_s[k], log.angles_deg[k]);
       table.values.row(static_cast<Eigen::Index>(k)) << log.time_s[k], state.transpose(),

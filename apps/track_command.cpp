@@ -16,9 +16,9 @@
 #include "commands.hpp"
 #include "limb_deployment.hpp"
 #include "tendril/control/reference_patterns.hpp"
+#include "tendril/control/state_filter.hpp"
 #include "tendril/control/tracking_loop.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/data/prepare.hpp"
 #include "tendril/envs/pushable_robot.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/sma_limb/policy_tracking_controller.hpp"
@@ -33,7 +33,7 @@ namespace tendril::apps {
 namespace {
 
 // The limb as a deployed controller sees it: each reading passed through the same state
-// estimate as the training data (data::StateFilter, thesis eqs. 4.5 and 4.7).
+// estimate as the training data (control::StateFilter, thesis eqs. 4.5 and 4.7).
 class RobotLimb final : public control::TrackedLimb {
  public:
   RobotLimb(Env& robot, uint64_t seed) : robot_(robot), seed_(seed) {}
@@ -57,7 +57,7 @@ class RobotLimb final : public control::TrackedLimb {
 
   Env& robot_;  // SmaLimb/Robot-v0, on the bridge inside its HardwareInfo wrapper
   uint64_t seed_;
-  data::StateFilter filter_;
+  control::StateFilter filter_;
 };
 
 void write_run(std::ofstream& out, const std::filesystem::path& file, const std::string& pattern,

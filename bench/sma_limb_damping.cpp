@@ -12,7 +12,7 @@
 //            under steady throttle.
 // The limb is simulated with a noise-free sensor read every millisecond; the thesis' sampler is
 // laid over that trace — a reading every 55–75 ms (uniform, whole ms), σ = 0.2° noise within
-// 0.5°, 0.1° resolution — and filtered as the data sets are (data::StateFilter, α = 0.8).
+// 0.5°, 0.1° resolution — and filtered as the data sets are (control::StateFilter, α = 0.8).
 //
 //   build/bench/sma_limb_damping [--output DIR] [--rates 15,30,45,60,90,200]
 //       [--calibration configs/sma_limb/calibration_stiff.yaml]
@@ -36,8 +36,8 @@
 #include <string>
 #include <vector>
 
+#include "tendril/control/state_filter.hpp"
 #include "tendril/core/config.hpp"
-#include "tendril/data/prepare.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/envs/sma_limb/limb_calibration.hpp"
 #include "tendril/physics/twins/sma/sma_limb.hpp"
@@ -139,7 +139,7 @@ Sampled sample(const Trace& trace, double from, bool noisy, uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_int_distribution<int> period(55, 75);
   std::normal_distribution<double> noise(0.0, 0.2);
-  tendril::data::StateFilter filter(0.8);
+  tendril::control::StateFilter filter(0.8);
   Sampled s;
   // trace.t[k] = (k + 1) ms after the start (or after `from`'s origin): index by milliseconds.
   const double origin = trace.t.front() - 1e-3;

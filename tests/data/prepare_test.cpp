@@ -5,6 +5,7 @@
 
 #include "support/error_message.hpp"
 #include "support/scratch_directory.hpp"
+#include "tendril/control/state_filter.hpp"
 
 namespace tendril::data {
 namespace {
@@ -70,7 +71,7 @@ TEST(Prepare, TheSplitStartsANewSegment) {
 
 // The filter a deployed policy runs gives what preparation wrote.
 TEST(StateFilter, StreamsTheSameStateAsPreparation) {
-  StateFilter filter;
+  control::StateFilter filter;
   const Table data = example();
   const Table prepared = prepare_limb_data(data, PrepareSettings{});
   for (int r = 0; r < 4; ++r) {
@@ -80,7 +81,7 @@ TEST(StateFilter, StreamsTheSameStateAsPreparation) {
   }
   EXPECT_NE(tendril::testing::error_message([&] { filter.update(0.1, Eigen::Vector2d::Zero()); }),
             "no error");
-  EXPECT_NE(tendril::testing::error_message([] { StateFilter bad(1.5); }), "no error");
+  EXPECT_NE(tendril::testing::error_message([] { control::StateFilter bad(1.5); }), "no error");
 }
 
 class PreparedFile : public tendril::testing::ScratchDirectoryTest {

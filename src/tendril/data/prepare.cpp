@@ -4,31 +4,11 @@
 #include <cstdio>
 #include <string>
 
+#include "tendril/control/state_filter.hpp"
 #include "tendril/core/error.hpp"
 #include "tendril/data/limb_data_set.hpp"
 
 namespace tendril::data {
-
-StateFilter::StateFilter(double alpha) : alpha_(alpha) {
-  require(std::isfinite(alpha) && alpha > 0.0 && alpha <= 1.0, "ema_alpha must lie in (0, 1]",
-          "StateFilter");
-}
-
-Eigen::Vector4d StateFilter::update(double time_s, const Eigen::Vector2d& angles_deg) {
-  if (!started_) {
-    filtered_ << angles_deg, 0.0, 0.0;
-    started_ = true;
-  } else {
-    const double dt = time_s - previous_time_;
-    if (!(dt > 0.0)) throw Error("time stamps must increase", "StateFilter");
-    Eigen::Vector4d raw;
-    raw << angles_deg, (angles_deg - previous_angles_) / dt;
-    filtered_ = alpha_ * raw + (1.0 - alpha_) * filtered_;
-  }
-  previous_time_ = time_s;
-  previous_angles_ = angles_deg;
-  return filtered_;
-}
 
 const TableSchema& prepared_schema() {
   static const TableSchema schema{
@@ -56,7 +36,7 @@ Table prepare_limb_data(const Table& data_set, const PrepareSettings& settings) 
       "not a limb data set", who);
   const Eigen::Index rows = data_set.rows();
   require(rows >= 1, "the data set is empty", who);
-  StateFilter filter(settings.ema_alpha);
+  control::StateFilter filter(settings.ema_alpha);
 
   const double first = data_set.values(0, 0), last = data_set.values(rows - 1, 0);
   const double split_time = first + (1.0 - settings.test_fraction) * (last - first);

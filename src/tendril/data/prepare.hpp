@@ -7,31 +7,8 @@
 
 namespace tendril::data {
 
-// The thesis' state estimate from raw readings (seed 001, §4.2.3), one reading at a time — the
-// same code prepares data sets and runs beside a deployed policy:
-//   ω_k = (θ_k − θ_{k−1}) / (T_k − T_{k−1})                    eq. 4.5, real time stamps
-//   x̄_k = α x_k + (1 − α) x̄_{k−1},  x = (θx, θy, ωx, ωy)      eq. 4.7 as a recursive EMA
-// The first reading has ω = 0 and x̄ = x. The thesis writes eq. 4.7 as a blend of the two latest
-// raw samples; its author's training code filters recursively (pandas ewm(alpha=0.8,
-// adjust=False) on θ and θ̇, spec §2.3) — the form used here, in training and deployment alike.
-class StateFilter {
- public:
-  explicit StateFilter(double alpha = 0.8);
-
-  void reset() { started_ = false; }
-  // Takes a reading (time in s, angles in deg) and returns the filtered state
-  // (θx, θy [deg], ωx, ωy [deg/s]). Time stamps must increase.
-  Eigen::Vector4d update(double time_s, const Eigen::Vector2d& angles_deg);
-  const Eigen::Vector4d& state() const { return filtered_; }
-
- private:
-  double alpha_;
-  bool started_ = false;
-  double previous_time_ = 0.0;
-  Eigen::Vector2d previous_angles_ = Eigen::Vector2d::Zero();
-  Eigen::Vector4d filtered_ = Eigen::Vector4d::Zero();
-};
-
+// Preparation filters each segment's readings with control::StateFilter (eqs. 4.5, 4.7), the
+// estimate a deployed controller runs beside the limb.
 struct PrepareSettings {
   double ema_alpha = 0.8;  // the thesis' α
   // The last test_fraction of the recording's time span is the test set (the thesis: 30 of
