@@ -16,14 +16,13 @@
 #include "commands.hpp"
 #include "limb_deployment.hpp"
 #include "tendril/control/reference_patterns.hpp"
-#include "tendril/control/state_filter.hpp"
-#include "tendril/control/tracking_loop.hpp"
+#include "tendril/control/tracking_policy.hpp"
 #include "tendril/core/error.hpp"
-#include "tendril/envs/pushable_robot.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/runner/path_pushes.hpp"
+#include "tendril/envs/runner/tracking_record.hpp"
 #include "tendril/envs/sma_limb/policy_tracking_controller.hpp"
 #include "tendril/envs/sma_limb/sma_limb_env.hpp"
-#include "tendril/envs/wrappers/wrapper.hpp"
 #ifdef TENDRIL_WITH_RL
 #include "run_policy.hpp"
 #endif
@@ -32,36 +31,8 @@ namespace tendril::apps {
 
 namespace {
 
-// The limb as a deployed controller sees it: each reading passed through the same state
-// estimate as the training data (control::StateFilter, thesis eqs. 4.5 and 4.7).
-class RobotLimb final : public control::TrackedLimb {
- public:
-  RobotLimb(Env& robot, uint64_t seed) : robot_(robot), seed_(seed) {}
-
-  control::LimbState reset() override {
-    filter_.reset();
-    return state(robot_.reset(seed_));
-  }
-  control::LimbState apply(const Eigen::Vector2d& throttles) override {
-    const Step step = robot_.step(throttles.cast<float>());
-    require(!step.terminated, "the limb's state became non-finite", "tendril track");
-    return state(step.observation);
-  }
-
- private:
-  control::LimbState state(const Observation& reading) {
-    const Eigen::Vector2d angles(reading[0], reading[1]);
-    const Eigen::Vector4d x = filter_.update(reading[2], angles);
-    return control::LimbState{.time_s = reading[2], .angles = x.head<2>(), .rates = x.tail<2>()};
-  }
-
-  Env& robot_;  // SmaLimb/Robot-v0, on the bridge inside its HardwareInfo wrapper
-  uint64_t seed_;
-  control::StateFilter filter_;
-};
-
 void write_run(std::ofstream& out, const std::filesystem::path& file, const std::string& pattern,
-               const control::TrackingRun& run, bool append) {
+               const envs::TrackingRun& run, bool append) {
   if (!append) out << "pattern,step,time_s,theta_x,theta_y,goal_x,goal_y,u_x,u_y\n";
   for (Eigen::Index k = 0; k < run.angles.cols(); ++k) {
     out << pattern << ',' << k << ',' << run.times[k] << ',' << run.angles(0, k) << ','
@@ -88,8 +59,8 @@ int track_command(const Arguments& line) {
           "exists already; choose another file", out);
 
   // The controller: PID, or a trained policy that acts on the limb as on the learned model.
-  std::function<std::unique_ptr<control::TrackingController>()> make_controller = [] {
-    return std::make_unique<control::PidController>();
+  std::function<std::shared_ptr<control::TrackingController>()> make_controller = [] {
+    return std::make_shared<control::PidController>();
   };
   std::string controller_name = "PID (Kp 2, Ki 0.001, Kd 0.5)";
   // The policy's learned model names the calibration its data came from (LimbDeployment).
@@ -102,7 +73,7 @@ int track_command(const Arguments& line) {
         envs::sma_limb::LearnedReachOptions::from_config(run.experiment.env.params);
     const bool deterministic = !line.has("stochastic");
     make_controller = [policy = run.policy, options, deterministic, seed] {
-      return std::make_unique<envs::sma_limb::PolicyTrackingController>(policy, options,
+      return std::make_shared<envs::sma_limb::PolicyTrackingController>(policy, options,
                                                                         deterministic, seed);
     };
     controller_name = "the policy of " + run.source.string() +
@@ -131,24 +102,19 @@ int track_command(const Arguments& line) {
     params.set("tip_mass", mass);
     params.set("seed", std::to_string(seed));
     auto env = envs::make(envs::sma_limb::SmaLimbEnv::kId, params);
-    RobotLimb limb_under_control(*env, seed);
-    control::WaypointFollower follower(control::reference_pattern(pattern));
-    const std::unique_ptr<control::TrackingController> controller = make_controller();
-    const int points = static_cast<int>(follower.points().cols());
-    int pushes = 0;
+    // Each reading filtered as the training data (StateFilter, thesis eqs. 4.5 and 4.7).
+    const control::TrackingPolicy policy(
+        *env, make_controller(), control::WaypointFollower(control::reference_pattern(pattern)));
     // Seed 001 §5.2.2 (a): a shove at 1/4 and 3/4 of the path, here along +x for 0.2 s.
-    auto disturb = [&](int, const control::WaypointFollower& f) {
-      if (push_n <= 0.0) return;
-      const int due = pushes == 0 ? points / 4 : pushes == 1 ? 3 * points / 4 : points + 1;
-      if (f.index() >= due) {
-        auto* robot = envs::find_wrapper<envs::PushableRobot>(*env);
-        require(robot != nullptr, "the robot cannot be pushed", "tendril track --push");
-        robot->push_tip(push_n * Eigen::VectorXd::Unit(robot->push_dim(), 0), 0.2);
-        ++pushes;
-      }
-    };
-    const control::TrackingRun run =
-        control::track(limb_under_control, *controller, follower, max_steps, disturb);
+    std::vector<envs::RunObserver*> observers;
+    std::optional<envs::PathPushes> pushes;
+    if (push_n > 0.0) {
+      const int points = static_cast<int>(policy.follower().points().cols());
+      pushes.emplace(policy, *env, Eigen::Vector2d(push_n, 0.0), 0.2,
+                     std::vector<int>{points / 4, 3 * points / 4});
+      observers.push_back(&*pushes);
+    }
+    const envs::TrackingRun run = envs::track_path(policy, *env, max_steps, seed, observers);
     if (std::isnan(run.rmse_deg)) {
       std::printf("%-8s %8ld %9s %s\n", pattern.c_str(), static_cast<long>(run.angles.cols()), "no",
                   "the path's first point was never reached");

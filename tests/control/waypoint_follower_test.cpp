@@ -16,14 +16,20 @@ Eigen::Matrix2Xd line() {
 TEST(WaypointFollower, AdvancesWithinTenDegreesOneWaypointPerStep) {
   WaypointFollower follower(line());
   EXPECT_EQ(follower.goal(), Eigen::Vector2d(0, 0));
+  // index_after tells where update would go without going there.
+  EXPECT_EQ(follower.index_after(Eigen::Vector2d(5, 0)), 1);
+  EXPECT_EQ(follower.index_after(Eigen::Vector2d(10, 0)), 0);
+  EXPECT_EQ(follower.index(), 0);
   EXPECT_EQ(follower.update(Eigen::Vector2d(5, 0)), Eigen::Vector2d(20, 0));   // 5° < 10°
   EXPECT_EQ(follower.update(Eigen::Vector2d(5, 0)), Eigen::Vector2d(20, 0));   // 15° away
   EXPECT_EQ(follower.update(Eigen::Vector2d(10, 0)), Eigen::Vector2d(20, 0));  // 10° is not within
   EXPECT_EQ(follower.update(Eigen::Vector2d(12, 3)), Eigen::Vector2d(40, 0));
   EXPECT_EQ(follower.index(), 2);
   EXPECT_FALSE(follower.finished());
+  EXPECT_EQ(follower.index_after(Eigen::Vector2d(39, 0)), 3);
   EXPECT_EQ(follower.update(Eigen::Vector2d(39, 0)), Eigen::Vector2d(40, 0));  // holds the end
   EXPECT_TRUE(follower.finished());
+  EXPECT_EQ(follower.index_after(Eigen::Vector2d(40, 0)), 3);
   follower.restart();
   EXPECT_EQ(follower.index(), 0);
   EXPECT_EQ(follower.goal(), Eigen::Vector2d(0, 0));

@@ -2,16 +2,18 @@
 
 // Hardware-in-the-loop fixtures: the SMA limb's firmware (TENDRIL_FIRMWARE_ELF, built by the
 // tendril_firmware target) in its simavr emulator, bridges to it over the pseudo-terminal, and
-// the limb env (twin or bridge) as the tracking loop's limb.
+// waypoint tracking on the limb env (twin or bridge) through the policy runner.
 
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 
-#include "tendril/control/tracking_loop.hpp"
+#include "tendril/control/tracking_policy.hpp"
 #include "tendril/core/config.hpp"
 #include "tendril/core/env.hpp"
+#include "tendril/envs/runner/policy_runner.hpp"
 #include "tendril/hardware/limb_bridge.hpp"
 #include "tendril/hardware/link_faults.hpp"
 #include "tendril/hardware/serial_transport.hpp"
@@ -44,35 +46,21 @@ inline Config bridge_env_params(const std::string& port, const std::string& extr
                        extra);
 }
 
-// SmaLimb/Robot-v0 (observation θx, θy, t) as the tracking loop's limb: the rates are the finite
-// difference of the last two readings, as the thesis' hardware node estimated them. Each reset
-// uses `seed`; `info()` is the last step's.
-class EnvLimb final : public control::TrackedLimb {
- public:
-  explicit EnvLimb(Env& env, uint64_t seed = 3) : env_(env), seed_(seed) {}
-  control::LimbState reset() override { return state(env_.reset(seed_)); }
-  control::LimbState apply(const Eigen::Vector2d& throttles) override {
-    const Step step = env_.step(throttles.cast<float>());
-    info_ = step.info;
-    return state(step.observation);
-  }
-  const Info& info() const { return info_; }
+// Waypoint tracking on SmaLimb/Robot-v0 (readings θx, θy, t) on the raw readings: the rates are
+// the finite difference of the last two (StateFilter with α = 1), as the thesis' hardware node
+// estimated them.
+inline control::TrackingPolicy raw_reading_tracking(
+    const Env& limb, std::shared_ptr<control::TrackingController> controller,
+    const Eigen::Matrix2Xd& path) {
+  return control::TrackingPolicy(limb, std::move(controller), control::WaypointFollower(path),
+                                 control::StateFilter(1.0));
+}
 
- private:
-  control::LimbState state(const Observation& o) {
-    const Eigen::Vector2d angles(o[0], o[1]);
-    const double dt = o[2] - time_;
-    const Eigen::Vector2d rates =
-        dt > 0 ? ((angles - angles_) / dt).eval() : Eigen::Vector2d::Zero();
-    time_ = o[2];
-    angles_ = angles;
-    return {o[2], angles, rates};
-  }
-  Env& env_;
-  uint64_t seed_;
-  Info info_;
-  double time_ = 0.0;
-  Eigen::Vector2d angles_ = Eigen::Vector2d::Zero();
+// The info of a run's last step.
+class LastInfo final : public envs::RunObserver {
+ public:
+  void on_step(const envs::StepView& step) override { info = step.result.info; }
+  Info info;
 };
 
 }  // namespace tendril::hardware::testing

@@ -9,8 +9,9 @@
 
 #include "limb_hil_support.hpp"
 #include "tendril/control/reference_patterns.hpp"
-#include "tendril/control/tracking_loop.hpp"
+#include "tendril/control/tracking_policy.hpp"
 #include "tendril/control/waypoint_follower.hpp"
+#include "tendril/envs/runner/tracking_record.hpp"
 #include "tendril/envs/sma_limb/bridge_limb_robot.hpp"
 #include "tendril/envs/sma_limb/calibrate.hpp"
 #include "tendril/envs/sma_limb/collect.hpp"
@@ -25,7 +26,6 @@ using envs::sma_limb::SmaLimbEnv;
 using testing::bridge_env_params;
 using testing::bridge_to;
 using testing::emulator_settings;
-using testing::EnvLimb;
 
 void expect_same_log(const envs::sma_limb::LimbLog& twin, const envs::sma_limb::LimbLog& bridge) {
   ASSERT_EQ(twin.size(), bridge.size());
@@ -113,22 +113,22 @@ TEST(LimbHil, AMinuteOfExplorationDataThroughTheFirmwareEqualsTheTwins) {
 TEST(LimbHil, AClosedLoopControllerThroughTheFirmwareTracksAsOnTheTwin) {
   const Eigen::Matrix2Xd path = control::reference_pattern("circle");
   auto run_on = [&](Env& env, Info* info) {
-    EnvLimb limb(env);
-    control::PidController pid;
-    control::WaypointFollower follower(path);
-    control::TrackingRun run = control::track(limb, pid, follower, 200);
-    if (info != nullptr) *info = limb.info();
+    const control::TrackingPolicy pid =
+        testing::raw_reading_tracking(env, std::make_shared<control::PidController>(), path);
+    testing::LastInfo last;
+    envs::TrackingRun run = envs::track_path(pid, env, 200, 3, {&last});
+    if (info != nullptr) *info = last.info;
     return run;
   };
   auto twin = SmaLimbEnv::create(Config::parse("limb: stiff\ncalibration: none"));
   Info twin_info;
-  const control::TrackingRun expected = run_on(*twin, &twin_info);
+  const envs::TrackingRun expected = run_on(*twin, &twin_info);
 
   LimbEmulator emulator(emulator_settings());
   emulator.start();
   auto bridged = SmaLimbEnv::create(bridge_env_params(emulator.port()));
   Info bridge_info;
-  const control::TrackingRun got = run_on(*bridged, &bridge_info);
+  const envs::TrackingRun got = run_on(*bridged, &bridge_info);
   emulator.stop();
 
   EXPECT_EQ(got.times, expected.times);

@@ -21,11 +21,11 @@
 
 #include "limb_hil_support.hpp"
 #include "tendril/control/reference_patterns.hpp"
-#include "tendril/control/tracking_loop.hpp"
-#include "tendril/control/waypoint_follower.hpp"
+#include "tendril/control/tracking_policy.hpp"
 #include "tendril/envs/registry.hpp"
+#include "tendril/envs/runner/tracking_record.hpp"
 #include "tendril/envs/sma_limb/learned_reach_task.hpp"
-#include "tendril/envs/sma_limb/reach_observation.hpp"
+#include "tendril/envs/sma_limb/policy_tracking_controller.hpp"
 #include "tendril/rl/policy.hpp"
 #include "tendril/rl/sac/sac.hpp"
 #include "tendril/rl/vec_env_factory.hpp"
@@ -38,7 +38,6 @@ namespace {
 using envs::sma_limb::LearnedReachOptions;
 using testing::bridge_env_params;
 using testing::emulator_settings;
-using testing::EnvLimb;
 
 // One control step as the filtered policy saw and decided it.
 struct FilteredStep {
@@ -47,58 +46,24 @@ struct FilteredStep {
   bool intervened = false;
 };
 
-// A policy of SmaLimb/LearnedReach-v0 as a tracking controller behind the safety filter: the
-// reaching observation of the filtered state with the follower's point as the goal (goal
-// velocity 0), the filtered policy's throttles rounded to whole throttles, as the firmware takes
-// them. The policy samples (the thesis' deployed policy does) from a stream reseeded at reset.
-class FilteredReachController final : public control::TrackingController {
+// The filtered policy, keeping each of its decisions.
+class RecordedPolicy final : public Policy {
  public:
-  FilteredReachController(const safety::FilteredPolicy& policy, const LearnedReachOptions& options,
-                          uint64_t seed)
-      : policy_(policy),
-        observer_(options),
-        seed_(seed),
-        observation_(Observation::Zero(observer_.observation_size())) {}
-
-  void reset() override {
-    started_ = false;
-    rng_ = Rng(seed_);
-    steps_.clear();
+  explicit RecordedPolicy(const safety::FilteredPolicy& filtered) : filtered_(filtered) {}
+  const Space& observation_space() const override { return filtered_.observation_space(); }
+  const Space& action_space() const override { return filtered_.action_space(); }
+  void begin_episode(const Observation& observation) const override {
+    filtered_.begin_episode(observation);
   }
-
-  Eigen::Vector2d throttles(const control::LimbState& state, const Eigen::Vector2d& goal,
-                            double) override {
-    Eigen::Vector4d x;
-    x << state.angles, state.rates;
-    if (started_) {
-      observer_.reached(x);
-    } else {
-      observer_.reset(x);
-    }
-    observer_.observe(Eigen::Vector4d(goal.x(), goal.y(), 0.0, 0.0), observation_);
-    if (!started_) policy_.begin_episode(observation_);
-    started_ = true;
-    const Action action = policy_.act(observation_, /*deterministic=*/false, rng_);
-    steps_.push_back({observation_, action, policy_.filter().last_intervened()});
-    const Eigen::Vector2d throttles = action.cast<double>()
-                                          .array()
-                                          .round()
-                                          .cwiseMax(-envs::sma_limb::kMaxThrottle)
-                                          .cwiseMin(envs::sma_limb::kMaxThrottle);
-    observer_.apply(throttles);
-    return throttles;
+  Action act(const Observation& observation, bool deterministic, Rng& rng) const override {
+    Action action = filtered_.act(observation, deterministic, rng);
+    steps.push_back({observation, action, filtered_.filter().last_intervened()});
+    return action;
   }
-
-  const std::vector<FilteredStep>& steps() const { return steps_; }
+  mutable std::vector<FilteredStep> steps;
 
  private:
-  const safety::FilteredPolicy& policy_;
-  envs::sma_limb::ReachObserver observer_;
-  uint64_t seed_;
-  Rng rng_;
-  bool started_ = false;
-  Observation observation_;
-  std::vector<FilteredStep> steps_;
+  const safety::FilteredPolicy& filtered_;
 };
 
 // The policy and the critic as `tendril run --filter` deploys them: read back from their files.
@@ -129,7 +94,7 @@ Deployed train_policy_and_critic() {
 }
 
 struct FilteredRun {
-  control::TrackingRun run;
+  envs::TrackingRun run;
   std::vector<FilteredStep> steps;
   int64_t decisions = 0, interventions = 0;
 };
@@ -140,12 +105,18 @@ constexpr uint64_t kSeed = 3;  // of the limb's resets
 FilteredRun track_through_filter(Env& limb_env, const Deployed& deployed, double epsilon,
                                  const Eigen::Matrix2Xd& path) {
   const safety::FilteredPolicy filtered(*deployed.policy, *deployed.critic, epsilon);
-  FilteredReachController controller(filtered, LearnedReachOptions{}, 17);
-  EnvLimb limb(limb_env, kSeed);
-  control::WaypointFollower follower(path);
+  auto recorded = std::make_shared<RecordedPolicy>(filtered);
+  // The reaching observation of the state with the follower's point as the goal, the filtered
+  // policy's throttles rounded to whole throttles, as the firmware takes them; sampled (the
+  // thesis' deployed policy samples) from a stream reseeded with 17 at the path's start.
+  const control::TrackingPolicy tracking = testing::raw_reading_tracking(
+      limb_env,
+      std::make_shared<envs::sma_limb::PolicyTrackingController>(recorded, LearnedReachOptions{},
+                                                                 /*deterministic=*/false, 17),
+      path);
   FilteredRun result;
-  result.run = control::track(limb, controller, follower, kMaxSteps);
-  result.steps = controller.steps();
+  result.run = envs::track_path(tracking, limb_env, kMaxSteps, kSeed);
+  result.steps = recorded->steps;
   result.decisions = filtered.filter().decisions();
   result.interventions = filtered.filter().interventions();
   return result;

@@ -22,9 +22,14 @@ void WaypointFollower::restart() {
   goal_ = points_.col(0);
 }
 
+int WaypointFollower::index_after(const Eigen::Vector2d& angles) const {
+  return !finished() && (angles - goal_).norm() < tolerance_ ? index_ + 1 : index_;
+}
+
 const Eigen::Vector2d& WaypointFollower::update(const Eigen::Vector2d& angles) {
-  if (!finished() && (angles - goal_).norm() < tolerance_) {
-    ++index_;
+  const int next = index_after(angles);
+  if (next != index_) {
+    index_ = next;
     // After the last point the goal stays there: the limb holds the path's end.
     if (!finished()) goal_ = points_.col(index_);
   }

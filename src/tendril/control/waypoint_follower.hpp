@@ -20,6 +20,8 @@ class WaypointFollower {
   // Advances past every point within the tolerance of `angles` (at most one per call, as each
   // control step checks the current goal once) and returns the goal to steer to now.
   const Eigen::Vector2d& update(const Eigen::Vector2d& angles);
+  // The index update(angles) would move to, without moving; points().cols() once finished.
+  int index_after(const Eigen::Vector2d& angles) const;
   const Eigen::Vector2d& goal() const { return goal_; }
   int index() const { return index_; }
   bool finished() const { return index_ >= points_.cols(); }

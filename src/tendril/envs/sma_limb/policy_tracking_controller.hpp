@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "tendril/control/tracking_loop.hpp"
+#include "tendril/control/tracking_controller.hpp"
 #include "tendril/core/policy.hpp"
 #include "tendril/core/rng.hpp"
 #include "tendril/envs/sma_limb/learned_reach_task.hpp"
