@@ -111,7 +111,7 @@ int track_command(const Arguments& line) {
     if (push_n > 0.0) {
       const int points = static_cast<int>(policy.follower().points().cols());
       pushes.emplace(policy, *env, Eigen::Vector2d(push_n, 0.0), 0.2,
-                     std::vector<int>{points / 4, 3 * points / 4});
+                     std::vector<int>{points / 4, 3 * points / 4}, max_steps);
       observers.push_back(&*pushes);
     }
     const envs::TrackingRun run = envs::track_path(policy, *env, max_steps, seed, observers);

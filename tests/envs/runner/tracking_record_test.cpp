@@ -154,7 +154,7 @@ TEST(PathPushes, PushBeforeTheStepThatSteersToTheirWaypoint) {
   for (int i = 0; i < 12; ++i) line.col(i) = Eigen::Vector2d(5.0 * i, 0.0);
   StepPlant plant(0.1);
   const TrackingPolicy policy = pid_tracking(plant, line);
-  PathPushes pushes(policy, plant, Eigen::Vector2d(0.05, 0.0), 0.2, {4, 8});
+  PathPushes pushes(policy, plant, Eigen::Vector2d(0.05, 0.0), 0.2, {4, 8}, 1000);
   const TrackingRun run = track_path(policy, plant, 1000, 0, {&pushes});
   ASSERT_TRUE(run.finished);
   EXPECT_EQ(pushes.pushes(), 2u);
@@ -167,6 +167,13 @@ TEST(PathPushes, PushBeforeTheStepThatSteersToTheirWaypoint) {
   }
   EXPECT_EQ(plant.pushed_before_step, expected);
   EXPECT_GT(expected[0], 0);
+  // A budget that ends just before the step steering to waypoint 8: its push is not given.
+  StepPlant cut(0.1);
+  PathPushes first_only(policy, cut, Eigen::Vector2d(0.05, 0.0), 0.2, {4, 8}, expected[1]);
+  const TrackingRun shorter = track_path(policy, cut, expected[1], 0, {&first_only});
+  EXPECT_EQ(shorter.angles.cols(), expected[1]);
+  EXPECT_EQ(first_only.pushes(), 1u);
+  EXPECT_EQ(cut.pushed_before_step, std::vector<int>{expected[0]});
 }
 
 TEST(PathPushes, RefusesARobotThatCannotBePushed) {
@@ -179,7 +186,7 @@ TEST(PathPushes, RefusesARobotThatCannotBePushed) {
     StepPlant plant;
   } limb;
   const TrackingPolicy policy = pid_tracking(limb, control::reference_pattern("circle"));
-  EXPECT_THROW(PathPushes(policy, limb, Eigen::Vector2d(0.05, 0.0), 0.2, {1}), Error);
+  EXPECT_THROW(PathPushes(policy, limb, Eigen::Vector2d(0.05, 0.0), 0.2, {1}, 100), Error);
 }
 
 // A time limit ends the run (the runner does not start another episode on the step budget); a

@@ -8,12 +8,13 @@
 namespace tendril::envs {
 
 PathPushes::PathPushes(const control::TrackingPolicy& policy, Env& robot, Eigen::VectorXd force_n,
-                       double duration_s, std::vector<int> waypoints)
+                       double duration_s, std::vector<int> waypoints, int64_t max_steps)
     : policy_(policy),
       robot_(find_wrapper<PushableRobot>(robot)),
       force_n_(std::move(force_n)),
       duration_s_(duration_s),
-      waypoints_(std::move(waypoints)) {
+      waypoints_(std::move(waypoints)),
+      max_steps_(max_steps) {
   require(robot_ != nullptr, "the robot cannot be pushed", "PathPushes");
 }
 
@@ -24,7 +25,8 @@ void PathPushes::on_episode_start(int64_t /*episode*/, uint64_t /*seed*/,
 }
 
 void PathPushes::on_step(const StepView& step) {
-  if (!step.result.terminated) before_acting_on(step.result.observation);
+  const bool last = step.result.terminated || step.result.truncated || step.step + 1 >= max_steps_;
+  if (!last) before_acting_on(step.result.observation);
 }
 
 void PathPushes::before_acting_on(const Observation& reading) {
