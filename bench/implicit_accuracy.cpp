@@ -3,6 +3,12 @@
 // of implicit steps. Writes one CSV row per (robot, integrator, step); the largest step within
 // each robot's tolerance is read from it (docs/results/implicit_rods.md).
 //
+// Every robot also runs position Verlet at half the reference's step against the reference: the
+// reference's own discretisation error, the floor below which a tolerance means nothing. Each
+// row states the largest deviation twice: of the read-outs as sampled, and of their moving
+// averages over a window of the robot's (`smoothing`), the part of the deviation that is not
+// fast oscillation.
+//
 //   build/bench/implicit_accuracy [out.csv]   (default docs/results/implicit_rods/accuracy.csv)
 //
 // Robots and signals:
@@ -14,6 +20,9 @@
 //   sma        the stiff SMA limb (10 elements, Verlet 0.2 ms), count-based exploration's PWM
 //              (seed 001, ten readings per hold) recorded on the reference and replayed, 120 s;
 //              the bend sensor's true angles in degrees at every reading.
+//   sma_continuous  the same limb and protocol with the coils' phase continuous on a re-entered
+//              branch (PhaseReentry::kContinuous), which removes the twin's jumps of the bend
+//              angle when a branch is re-entered; reference and implicit runs on that twin.
 //   pneumatic  the pneumatic arm (18 elements, Verlet 0.5 ms, stochastic effects of the data
 //              protocol on), the saturating pressure signal at 10 Hz (seed 002), 60 s; module
 //              3's tip in mm at every motion-capture sample (100 Hz).
@@ -55,8 +64,40 @@ struct Robot {
   double tolerance;           // the robot's sensor noise, in `unit`
   double reference_step;      // s, the paper's position-Verlet step
   std::vector<double> steps;  // implicit steps to try, s
+  int smoothing;              // samples in the moving average of the smoothed deviation
+  // A run with the integrator at the step (position Verlet too: the reference and its half).
   std::function<Trajectory(RodIntegrator, double)> run;
 };
+
+// The largest and the mean distance of a run's samples from the reference's.
+struct Deviation {
+  double largest = 0.0, mean = 0.0;
+};
+
+Deviation deviation(const std::vector<Eigen::VectorXd>& run,
+                    const std::vector<Eigen::VectorXd>& reference) {
+  Deviation d;
+  for (std::size_t k = 0; k < run.size(); ++k) {
+    const double distance = (run[k] - reference[k]).norm();
+    d.largest = std::max(d.largest, distance);
+    d.mean += distance / static_cast<double>(run.size());
+  }
+  return d;
+}
+
+// Centred moving averages over `window` samples (shortened at the ends).
+std::vector<Eigen::VectorXd> smoothed(const std::vector<Eigen::VectorXd>& samples, int window) {
+  const int n = static_cast<int>(samples.size()), half = window / 2;
+  std::vector<Eigen::VectorXd> out;
+  out.reserve(samples.size());
+  for (int k = 0; k < n; ++k) {
+    const int first = std::max(0, k - half), last = std::min(n - 1, k + half);
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(samples[k].size());
+    for (int j = first; j <= last; ++j) sum += samples[j];
+    out.push_back(sum / static_cast<double>(last - first + 1));
+  }
+  return out;
+}
 
 template <typename Body>
 Trajectory timed(Body&& body) {
@@ -76,7 +117,13 @@ Trajectory timed(Body&& body) {
 Trajectory run_arm(physics::ElasticaArmSpec spec, double duration, RodIntegrator integrator,
                    double step) {
   spec.integrator = integrator;
-  spec.implicit_step = step;
+  if (integrator == RodIntegrator::kPositionVerlet) {
+    // The muscles' rate limit is per step: kept per second at another Verlet step.
+    spec.actuation.max_change_per_step *= step / spec.time_step;
+    spec.time_step = step;
+  } else {
+    spec.implicit_step = step;
+  }
   return timed([&](Trajectory& out) {
     physics::ElasticaArm arm = physics::build_elastica_arm(spec);
     const double action_period = 1.4e-3;
@@ -118,11 +165,14 @@ std::vector<std::array<int, 4>> exploration_pwm(const physics::SmaLimbSpec& spec
   return schedule;
 }
 
-Trajectory run_sma(const std::vector<std::array<int, 4>>& schedule, RodIntegrator integrator,
-                   double step) {
-  physics::SmaLimbSpec spec = physics::SmaLimbSpec::stiff();
+Trajectory run_sma(physics::SmaLimbSpec spec, const std::vector<std::array<int, 4>>& schedule,
+                   RodIntegrator integrator, double step) {
   spec.integrator = integrator;
-  spec.implicit_step = step;
+  if (integrator == RodIntegrator::kPositionVerlet) {
+    spec.steps_per_millisecond = static_cast<int>(std::lround(1e-3 / step));
+  } else {
+    spec.implicit_step = step;
+  }
   return timed([&](Trajectory& out) {
     physics::SmaLimb limb(spec, 3);
     for (const std::array<int, 4>& pwm : schedule) {
@@ -141,7 +191,7 @@ Trajectory run_pneumatic(RodIntegrator integrator, double step) {
   spec.effects.drift = spec.effects.hysteresis = spec.effects.imbalance = true;
   spec.effects.elasticity = true;
   spec.integrator = integrator;
-  spec.time_step = integrator == RodIntegrator::kPositionVerlet ? 5.0e-4 : step;
+  spec.time_step = step;
   return timed([&](Trajectory& out) {
     physics::pneumatic::PneumaticArm arm(spec);
     if (!arm.begin_trial(0)) throw Error("the arm did not settle");
@@ -165,7 +215,10 @@ int main(int argc, char** argv) {
   using namespace tendril;
   const std::string path = argc > 1 ? argv[1] : "docs/results/implicit_rods/accuracy.csv";
   const physics::SmaLimbSpec sma = physics::SmaLimbSpec::stiff();
+  physics::SmaLimbSpec sma_continuous = sma;
+  sma_continuous.actuator.coil.phase_reentry = physics::PhaseReentry::kContinuous;
   const std::vector<std::array<int, 4>> schedule = exploration_pwm(sma, 1800);  // ≈ 120 s
+  const std::vector<std::array<int, 4>> continuous_schedule = exploration_pwm(sma_continuous, 1800);
 
   std::vector<Robot> robots = {
       {"case1",
@@ -173,6 +226,7 @@ int main(int argc, char** argv) {
        1.0,
        2.0e-4,
        {2.0e-4, 3.5e-4, 7.0e-4, 1.4e-3},
+       72,  // 0.1 s of 1.4 ms actions
        [](RodIntegrator i, double h) {
          return run_arm(physics::ElasticaArmSpec::tracking(), 10.0, i, h);
        }},
@@ -181,6 +235,7 @@ int main(int argc, char** argv) {
        1.0,
        1.0e-4,
        {1.0e-4, 2.0e-4, 3.5e-4, 7.0e-4, 1.4e-3},
+       72,
        [](RodIntegrator i, double h) {
          return run_arm(physics::ElasticaArmSpec::structured_obstacles(), 5.0, i, h);
        }},
@@ -189,12 +244,23 @@ int main(int argc, char** argv) {
        0.2,
        sma.time_step(),
        {1e-3, 2e-3, 5e-3, 1e-2, 2e-2},
-       [&](RodIntegrator i, double h) { return run_sma(schedule, i, h); }},
+       10,  // one hold of the exploration, ≈ 0.67 s
+       [&](RodIntegrator i, double h) { return run_sma(sma, schedule, i, h); }},
+      {"sma_continuous",
+       "deg",
+       0.2,
+       sma.time_step(),
+       {1e-3, 2e-3, 5e-3, 1e-2, 2e-2},
+       10,
+       [&](RodIntegrator i, double h) {
+         return run_sma(sma_continuous, continuous_schedule, i, h);
+       }},
       {"pneumatic",
        "mm",
        0.2,
        5.0e-4,
        {1e-3, 2e-3, 2.5e-3, 5e-3, 1e-2},
+       10,  // 0.1 s of 100 Hz samples, one pressure command
        [](RodIntegrator i, double h) { return run_pneumatic(i, h); }},
   };
 
@@ -204,45 +270,56 @@ int main(int argc, char** argv) {
     return 1;
   }
   csv << "robot,integrator,step_ms,tolerance,unit,max_deviation,mean_deviation,"
-         "simulated_s_per_wall_s,speed_vs_reference,newton_iterations_per_step,"
-         "factorizations_per_step,halvings,within_tolerance\n";
+         "max_deviation_smoothed,simulated_s_per_wall_s,speed_vs_reference,"
+         "newton_iterations_per_step,factorizations_per_step,halvings,within_tolerance\n";
   for (const Robot& robot : robots) {
     const Trajectory reference = robot.run(RodIntegrator::kPositionVerlet, robot.reference_step);
+    if (reference.failed) {
+      std::fprintf(stderr, "%s: the reference failed: %s\n", robot.name.c_str(),
+                   reference.failure.c_str());
+      return 1;
+    }
     const double reference_speed = reference.simulated_seconds / reference.wall_seconds;
+    const std::vector<Eigen::VectorXd> reference_smoothed =
+        smoothed(reference.samples, robot.smoothing);
     std::printf("%s: reference (position Verlet, %.2f ms) %.0f simulated s per wall s\n",
                 robot.name.c_str(), 1e3 * robot.reference_step, reference_speed);
     csv << robot.name << ",verlet," << 1e3 * robot.reference_step << "," << robot.tolerance << ","
-        << robot.unit << ",0,0," << reference_speed << ",1,0,0,0,1\n";
-    for (RodIntegrator integrator : {RodIntegrator::kBackwardEuler, RodIntegrator::kBdf2}) {
-      for (double step : robot.steps) {
-        const Trajectory run = robot.run(integrator, step);
-        double largest = 0.0, mean = 0.0;
-        if (!run.failed) {
-          for (std::size_t k = 0; k < run.samples.size(); ++k) {
-            const double deviation = (run.samples[k] - reference.samples[k]).norm();
-            largest = std::max(largest, deviation);
-            mean += deviation / static_cast<double>(run.samples.size());
-          }
-        }
-        const double speed = run.failed ? 0.0 : run.simulated_seconds / run.wall_seconds;
-        const double steps = std::max<double>(1.0, static_cast<double>(run.newton.steps));
-        const bool within = !run.failed && largest <= robot.tolerance;
-        std::printf(
-            "  %-14s %6.2f ms: max %8.4f %s, mean %8.4f, %6.0f sim s/s (%5.2fx), %.2f it, "
-            "%.2f fact/step, %lld halvings%s%s\n",
-            physics::integrator_name(integrator), 1e3 * step, largest, robot.unit.c_str(), mean,
-            speed, speed / reference_speed, run.newton.iterations / steps,
-            run.newton.factorizations / steps, static_cast<long long>(run.newton.halvings),
-            within ? "  within" : "", run.failed ? ("  FAILED: " + run.failure).c_str() : "");
-        std::fflush(stdout);
-        csv << robot.name << "," << physics::integrator_name(integrator) << "," << 1e3 * step << ","
-            << robot.tolerance << "," << robot.unit << ","
-            << (run.failed ? std::string("nan") : std::to_string(largest)) << ","
-            << (run.failed ? std::string("nan") : std::to_string(mean)) << "," << speed << ","
-            << speed / reference_speed << "," << run.newton.iterations / steps << ","
-            << run.newton.factorizations / steps << "," << run.newton.halvings << ","
-            << (within ? 1 : 0) << "\n";
+        << robot.unit << ",0,0,0," << reference_speed << ",1,0,0,0,1\n";
+
+    // One row: the run at `step` against the reference.
+    auto report = [&](RodIntegrator integrator, double step, const Trajectory& run) {
+      Deviation raw, smooth;
+      if (!run.failed) {
+        raw = deviation(run.samples, reference.samples);
+        smooth = deviation(smoothed(run.samples, robot.smoothing), reference_smoothed);
       }
+      const double speed = run.failed ? 0.0 : run.simulated_seconds / run.wall_seconds;
+      const double steps = std::max<double>(1.0, static_cast<double>(run.newton.steps));
+      const bool within = !run.failed && raw.largest <= robot.tolerance;
+      std::printf(
+          "  %-16s %6.2f ms: max %8.4f %s (smoothed %8.4f), mean %8.4f, %6.0f sim s/s (%5.2fx), "
+          "%.2f it, %.2f fact/step, %lld halvings%s%s\n",
+          physics::integrator_name(integrator), 1e3 * step, raw.largest, robot.unit.c_str(),
+          smooth.largest, raw.mean, speed, speed / reference_speed, run.newton.iterations / steps,
+          run.newton.factorizations / steps, static_cast<long long>(run.newton.halvings),
+          within ? "  within" : "", run.failed ? ("  FAILED: " + run.failure).c_str() : "");
+      std::fflush(stdout);
+      const auto value = [&](double x) {
+        return run.failed ? std::string("nan") : std::to_string(x);
+      };
+      csv << robot.name << "," << physics::integrator_name(integrator) << "," << 1e3 * step << ","
+          << robot.tolerance << "," << robot.unit << "," << value(raw.largest) << ","
+          << value(raw.mean) << "," << value(smooth.largest) << "," << speed << ","
+          << speed / reference_speed << "," << run.newton.iterations / steps << ","
+          << run.newton.factorizations / steps << "," << run.newton.halvings << ","
+          << (within ? 1 : 0) << "\n";
+    };
+    // The reference's own discretisation error.
+    const double half = 0.5 * robot.reference_step;
+    report(RodIntegrator::kPositionVerlet, half, robot.run(RodIntegrator::kPositionVerlet, half));
+    for (RodIntegrator integrator : {RodIntegrator::kBackwardEuler, RodIntegrator::kBdf2}) {
+      for (double step : robot.steps) report(integrator, step, robot.run(integrator, step));
     }
   }
   std::printf("wrote %s\n", path.c_str());
