@@ -9,7 +9,10 @@
 // averages over a window of the robot's (`smoothing`), the part of the deviation that is not
 // fast oscillation.
 //
-//   build/bench/implicit_accuracy [out.csv]   (default docs/results/implicit_rods/accuracy.csv)
+//   build/bench/implicit_accuracy [out.csv [robot]]
+//
+// (default docs/results/implicit_rods/accuracy.csv, every robot; naming one runs only it, e.g.
+// to profile its implicit steps).
 //
 // Robots and signals:
 //   case1      the Elastica arm of Tracking3D-v0 (20 elements, Verlet 0.2 ms), a random policy's
@@ -264,14 +267,21 @@ int main(int argc, char** argv) {
        [](RodIntegrator i, double h) { return run_pneumatic(i, h); }},
   };
 
+  const std::string only = argc > 2 ? argv[2] : "";
+  std::erase_if(robots, [&](const Robot& robot) { return !only.empty() && robot.name != only; });
+  if (robots.empty()) {
+    std::fprintf(stderr, "no robot named %s\n", only.c_str());
+    return 1;
+  }
   std::ofstream csv(path);
   if (!csv) {
     std::fprintf(stderr, "cannot write %s\n", path.c_str());
     return 1;
   }
   csv << "robot,integrator,step_ms,tolerance,unit,max_deviation,mean_deviation,"
-         "max_deviation_smoothed,simulated_s_per_wall_s,speed_vs_reference,"
-         "newton_iterations_per_step,factorizations_per_step,halvings,within_tolerance\n";
+         "max_deviation_smoothed,simulated_s_per_wall_s,speed_vs_reference,us_per_step,"
+         "step_cost_vs_reference,newton_iterations_per_step,factorizations_per_step,halvings,"
+         "within_tolerance\n";
   for (const Robot& robot : robots) {
     const Trajectory reference = robot.run(RodIntegrator::kPositionVerlet, robot.reference_step);
     if (reference.failed) {
@@ -280,12 +290,20 @@ int main(int argc, char** argv) {
       return 1;
     }
     const double reference_speed = reference.simulated_seconds / reference.wall_seconds;
+    // Wall time per step: position Verlet takes simulated time / step steps; an implicit rod
+    // counts its steps, the halves of failed ones included.
+    const auto us_per_step = [](const Trajectory& run, double step) {
+      const double steps = run.newton.steps > 0 ? static_cast<double>(run.newton.steps)
+                                                : run.simulated_seconds / step;
+      return 1e6 * run.wall_seconds / steps;
+    };
+    const double reference_us = us_per_step(reference, robot.reference_step);
     const std::vector<Eigen::VectorXd> reference_smoothed =
         smoothed(reference.samples, robot.smoothing);
     std::printf("%s: reference (position Verlet, %.2f ms) %.0f simulated s per wall s\n",
                 robot.name.c_str(), 1e3 * robot.reference_step, reference_speed);
     csv << robot.name << ",verlet," << 1e3 * robot.reference_step << "," << robot.tolerance << ","
-        << robot.unit << ",0,0,0," << reference_speed << ",1,0,0,0,1\n";
+        << robot.unit << ",0,0,0," << reference_speed << ",1," << reference_us << ",1,0,0,0,1\n";
 
     // One row: the run at `step` against the reference.
     auto report = [&](RodIntegrator integrator, double step, const Trajectory& run) {
@@ -295,15 +313,17 @@ int main(int argc, char** argv) {
         smooth = deviation(smoothed(run.samples, robot.smoothing), reference_smoothed);
       }
       const double speed = run.failed ? 0.0 : run.simulated_seconds / run.wall_seconds;
+      const double us = run.failed ? 0.0 : us_per_step(run, step);
       const double steps = std::max<double>(1.0, static_cast<double>(run.newton.steps));
       const bool within = !run.failed && raw.largest <= robot.tolerance;
       std::printf(
           "  %-16s %6.2f ms: max %8.4f %s (smoothed %8.4f), mean %8.4f, %6.0f sim s/s (%5.2fx), "
-          "%.2f it, %.2f fact/step, %lld halvings%s%s\n",
+          "%.2f us/step (%.1fx the reference's), %.2f it, %.2f fact/step, %lld halvings%s%s\n",
           physics::integrator_name(integrator), 1e3 * step, raw.largest, robot.unit.c_str(),
-          smooth.largest, raw.mean, speed, speed / reference_speed, run.newton.iterations / steps,
-          run.newton.factorizations / steps, static_cast<long long>(run.newton.halvings),
-          within ? "  within" : "", run.failed ? ("  FAILED: " + run.failure).c_str() : "");
+          smooth.largest, raw.mean, speed, speed / reference_speed, us, us / reference_us,
+          run.newton.iterations / steps, run.newton.factorizations / steps,
+          static_cast<long long>(run.newton.halvings), within ? "  within" : "",
+          run.failed ? ("  FAILED: " + run.failure).c_str() : "");
       std::fflush(stdout);
       const auto value = [&](double x) {
         return run.failed ? std::string("nan") : std::to_string(x);
@@ -311,9 +331,9 @@ int main(int argc, char** argv) {
       csv << robot.name << "," << physics::integrator_name(integrator) << "," << 1e3 * step << ","
           << robot.tolerance << "," << robot.unit << "," << value(raw.largest) << ","
           << value(raw.mean) << "," << value(smooth.largest) << "," << speed << ","
-          << speed / reference_speed << "," << run.newton.iterations / steps << ","
-          << run.newton.factorizations / steps << "," << run.newton.halvings << ","
-          << (within ? 1 : 0) << "\n";
+          << speed / reference_speed << "," << us << "," << us / reference_us << ","
+          << run.newton.iterations / steps << "," << run.newton.factorizations / steps << ","
+          << run.newton.halvings << "," << (within ? 1 : 0) << "\n";
     };
     // The reference's own discretisation error.
     const double half = 0.5 * robot.reference_step;
