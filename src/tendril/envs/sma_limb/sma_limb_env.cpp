@@ -47,6 +47,15 @@ std::unique_ptr<Env> SmaLimbEnv::create(const Config& params) {
       throw Error(e.what_wrong(), params.source() + ": integrator");
     }
   }
+  // An implicit twin's longest step between two readings (SmaLimbSpec::implicit_step, s).
+  if (params.has("implicit_step")) {
+    spec.implicit_step = params.get<double>("implicit_step");
+    if (!(std::isfinite(spec.implicit_step) && spec.implicit_step > 0.0)) {
+      throw Error("implicit_step must be finite and positive (s), got " +
+                      std::to_string(spec.implicit_step),
+                  params.where("implicit_step"));
+    }
+  }
   // The silicone's viscous loss (SmaLimbSpec::damping_rate, 1/s): the limb's own unless a
   // study of the twin's damping sets it (docs/results/learned_dynamics.md).
   if (params.has("damping_rate")) {
@@ -213,6 +222,9 @@ EnvDescription SmaLimbEnv::description() {
       .parameters = {{"limb", "", "stiff or soft (seed 001's two limbs)"},
                      {"tip_mass", "kg", "mass hung at the tip"},
                      {"integrator", "", "the twin's rod integrator; default the limb's own", true},
+                     {"implicit_step", "s",
+                      "an implicit twin's longest rod step between two readings; default 0.005",
+                      true},
                      {"damping_rate", "1/s",
                       "the twin's viscous loss, every rate decaying at it; default the limb's own "
                       "(15)",
