@@ -237,6 +237,48 @@ TEST(RodJacobian, BandMatrixFactorsSolveAsTheDenseMatrix) {
   EXPECT_LT((rhs - expected).norm(), 1e-13 * expected.norm());
 }
 
+// The contact band (20 diagonals) with no entry beyond 11 — a rod touching no wall — is solved by
+// the 11-diagonal kernel, to the same numbers as the matrix stored in the narrow band; one entry
+// further out and the wide kernel solves it, as the dense matrix does.
+TEST(RodJacobian, WideBandMatrixSolvesWithinTheBandItFills) {
+  const int size = 63;
+  BandMatrix wide, narrow;
+  wide.resize(size, 20, 20);
+  narrow.resize(size, 11, 11);
+  Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(size, size);
+  for (int r = 0; r < size; ++r) {
+    for (int c = narrow.first_column(r); c < narrow.end_column(r); ++c) {
+      const double value = r == c ? 30.0 + r : std::sin(1.0 + r * 9 + c);
+      wide(r, c) = narrow(r, c) = dense(r, c) = value;
+    }
+  }
+  Eigen::VectorXd rhs(size);
+  for (int k = 0; k < size; ++k) rhs[k] = std::cos(k);
+  ASSERT_TRUE(wide.factorize());
+  ASSERT_TRUE(narrow.factorize());
+  EXPECT_EQ(wide.solve_lower(), 11);
+  EXPECT_EQ(wide.solve_upper(), 11);
+  Eigen::VectorXd from_wide = rhs, from_narrow = rhs;
+  wide.solve(from_wide.data());
+  narrow.solve(from_narrow.data());
+  EXPECT_EQ(from_wide, from_narrow);
+  const Eigen::VectorXd expected = dense.lu().solve(rhs);
+  EXPECT_LT((from_wide - expected).norm(), 1e-13 * expected.norm());
+
+  BandMatrix wider;
+  wider.resize(size, 20, 20);
+  for (int r = 0; r < size; ++r) {
+    for (int c = narrow.first_column(r); c < narrow.end_column(r); ++c) wider(r, c) = dense(r, c);
+  }
+  wider(40, 25) = dense(40, 25) = 0.5;  // 15 below the diagonal
+  ASSERT_TRUE(wider.factorize());
+  EXPECT_EQ(wider.solve_lower(), 20);
+  Eigen::VectorXd solution = rhs;
+  wider.solve(solution.data());
+  const Eigen::VectorXd dense_solution = dense.lu().solve(rhs);
+  EXPECT_LT((solution - dense_solution).norm(), 1e-13 * dense_solution.norm());
+}
+
 TEST(RodJacobian, SingularBandMatrixIsReported) {
   BandMatrix band;
   band.resize(3, 1, 1);

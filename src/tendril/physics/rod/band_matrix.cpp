@@ -59,18 +59,26 @@ bool factorize_band(double* values, int size, int lower_runtime, int upper_runti
   return true;
 }
 
-// Column-oriented substitution on the factors copied by columns: once an unknown is known, it
-// is taken out of the equations below (above) it. With the bandwidth fixed, the pending
-// subtractions for the next rows are kept in a small array the compiler holds in registers, so
-// the chain from one unknown to the next is one multiply-add and no store has to be read back.
+// Column-oriented substitution on the factors copied by columns (`lower_stride`, `upper_stride`
+// entries apart, of which the first kLower, kUpper are used): once an unknown is known, it is
+// taken out of the equations below (above) it. With the bandwidth fixed, the pending
+// subtractions for the next rows are kept in a small array, so the chain from one unknown to the
+// next is one multiply-add. Kept scalar: vectorized, the shift of that array by one entry per
+// unknown becomes vector stores and loads of it offset by one entry, each load waiting for the
+// stores before it (a store-forwarding stall that made the band-20 solve half of the time of
+// case 3's implicit step).
 template <int kLower, int kUpper>
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((optimize("no-tree-vectorize", "no-tree-slp-vectorize")))
+#endif
 void solve_fixed(const double* lower_columns, const double* upper_columns,
-                 const double* inverse_diagonal, int size, double* b) {
+                 const double* inverse_diagonal, int size, int lower_stride, int upper_stride,
+                 double* b) {
   std::array<double, kLower + 1> pending{};
   for (int k = 0; k < size; ++k) {
     const double y = b[k] - pending[0];
     b[k] = y;
-    const double* column = lower_columns + static_cast<std::ptrdiff_t>(k) * kLower;
+    const double* column = lower_columns + static_cast<std::ptrdiff_t>(k) * lower_stride;
     const int count = std::min(kLower, size - 1 - k);
     for (int j = 0; j < kLower - 1; ++j) {
       pending[j] = pending[j + 1] + (j < count ? column[j] * y : 0.0);
@@ -81,7 +89,7 @@ void solve_fixed(const double* lower_columns, const double* upper_columns,
   for (int k = size - 1; k >= 0; --k) {
     const double x = (b[k] - waiting[0]) * inverse_diagonal[k];
     b[k] = x;
-    const double* column = upper_columns + static_cast<std::ptrdiff_t>(k) * kUpper;
+    const double* column = upper_columns + static_cast<std::ptrdiff_t>(k) * upper_stride;
     const int count = std::min(kUpper, k);
     for (int j = 0; j < kUpper - 1; ++j) {
       waiting[j] = waiting[j + 1] + (j < count ? column[j] * x : 0.0);
@@ -126,14 +134,41 @@ bool BandMatrix::factorize() {
     for (int j = 0; j < upper_ && k - 1 - j >= 0; ++j) upper_column[j] = row(k - 1 - j)[k];
     inverse_diagonal_[k] = 1.0 / row(k)[k];
   }
+  find_solve_band();
   return true;
+}
+
+// Without pivoting the factors keep the zeros of the matrix outside its profile, so a matrix of
+// the wide contact band whose entries all lie within 11 diagonals (no element touches a wall)
+// has factors within them too and is solved by the narrow kernel: the same sums without the
+// terms that are exactly zero.
+void BandMatrix::find_solve_band() {
+  solve_lower_ = lower_;
+  solve_upper_ = upper_;
+  constexpr int kNarrow = 11;
+  if (lower_ <= kNarrow || upper_ <= kNarrow) return;
+  for (int k = 0; k < size_; ++k) {
+    const double* lower_column = lower_columns_.data() + static_cast<Eigen::Index>(k) * lower_;
+    const double* upper_column = upper_columns_.data() + static_cast<Eigen::Index>(k) * upper_;
+    for (int j = kNarrow; j < lower_; ++j) {
+      if (lower_column[j] != 0.0) return;
+    }
+    for (int j = kNarrow; j < upper_; ++j) {
+      if (upper_column[j] != 0.0) return;
+    }
+  }
+  solve_lower_ = solve_upper_ = kNarrow;
 }
 
 void BandMatrix::solve(double* b) const {
   const double *lower = lower_columns_.data(), *upper = upper_columns_.data();
   const double* inverse = inverse_diagonal_.data();
-  if (lower_ == 11 && upper_ == 11) return solve_fixed<11, 11>(lower, upper, inverse, size_, b);
-  if (lower_ == 20 && upper_ == 20) return solve_fixed<20, 20>(lower, upper, inverse, size_, b);
+  if (solve_lower_ == 11 && solve_upper_ == 11) {
+    return solve_fixed<11, 11>(lower, upper, inverse, size_, lower_, upper_, b);
+  }
+  if (solve_lower_ == 20 && solve_upper_ == 20) {
+    return solve_fixed<20, 20>(lower, upper, inverse, size_, lower_, upper_, b);
+  }
   solve_any(lower, upper, inverse, size_, lower_, upper_, b);
 }
 
@@ -151,6 +186,7 @@ void BandMatrix::load_factors(SnapshotReader& in) {
   lower_columns_ = std::move(lower);
   upper_columns_ = std::move(upper);
   inverse_diagonal_ = std::move(inverse);
+  find_solve_band();
 }
 
 Eigen::MatrixXd BandMatrix::dense() const {

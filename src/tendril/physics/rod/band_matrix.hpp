@@ -21,6 +21,10 @@ class BandMatrix {
   int size() const { return size_; }
   int lower() const { return lower_; }
   int upper() const { return upper_; }
+  // The bandwidths the last factors fill and the solves use: lower() and upper(), or 11 when a
+  // wider matrix has no entry beyond 11 diagonals.
+  int solve_lower() const { return solve_lower_; }
+  int solve_upper() const { return solve_upper_; }
 
   // Entry (row, col); |col − row| must lie within the band.
   double& operator()(int row, int col) { return values_[index(row, col)]; }
@@ -38,7 +42,7 @@ class BandMatrix {
   // leaving the values undefined, at a pivot that is zero or not finite.
   [[nodiscard]] bool factorize();
   // Solves (L U) x = b in place (b ← x), after factorize(), which also keeps the factors by
-  // columns for it.
+  // columns for it, within the bandwidths the factors fill (solve_lower(), solve_upper()).
   void solve(double* b) const;
 
   // The factors (what solve uses) in and out of snapshots; load_factors reads everything before
@@ -50,11 +54,13 @@ class BandMatrix {
   Eigen::MatrixXd dense() const;
 
  private:
+  void find_solve_band();
   Eigen::Index index(int row, int col) const {
     return static_cast<Eigen::Index>(row) * width_ + lower_ + col - row;
   }
 
   int size_ = 0, lower_ = 0, upper_ = 0, width_ = 1;
+  int solve_lower_ = 0, solve_upper_ = 0;
   Eigen::VectorXd values_;
   // The factors again, by columns (solve), and 1/U(k, k).
   Eigen::VectorXd lower_columns_, upper_columns_, inverse_diagonal_;

@@ -171,7 +171,6 @@ void ImplicitStepper::assemble_for_test(const RodModel& model, const RodState& s
 
 void ImplicitStepper::step(const RodModel& model, RodState& state, const PartsByStage& parts,
                            double h) {
-  const int n = model.n_elements;
   // The scheme's coefficients (see the class comment).
   double beta = 0.0, gamma = 1.0;
   if (integrator_ == RodIntegrator::kBdf2 && has_history_) {
