@@ -9,6 +9,8 @@ velocity_error (m/s) and reward, and the training's time/time_elapsed (s) at tho
   build/apps/tendril run RUN --steps N --seed 1000 [--set ...] > EVAL.txt
   /usr/bin/python3 docs/results/beam/variants.py --out docs/results/beam/variants.csv \
       CONFIG:OVERRIDES:SEED:STEPS:RUN:EVAL.txt ...
+
+With --append the rows are added to an existing file (runs of a later variant).
 """
 import argparse
 import csv
@@ -41,12 +43,14 @@ def wall_seconds(run, steps):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", required=True)
+    parser.add_argument("--append", action="store_true", help="add the rows to an existing --out")
     parser.add_argument("runs", nargs="+", help="CONFIG:OVERRIDES:SEED:STEPS:RUN:EVAL.txt")
     args = parser.parse_args()
-    with open(args.out, "w", newline="") as out:
+    with open(args.out, "a" if args.append else "w", newline="") as out:
         writer = csv.writer(out, lineterminator="\n")
-        writer.writerow(["config", "overrides", "seed", "steps", "mean_distance_m",
-                         "velocity_error_m_s", "reward_per_step", "wall_s"])
+        if not args.append:
+            writer.writerow(["config", "overrides", "seed", "steps", "mean_distance_m",
+                             "velocity_error_m_s", "reward_per_step", "wall_s"])
         for item in args.runs:
             config, overrides, seed, steps, run, evaluation = item.split(":")
             means = per_step_means(evaluation)
