@@ -138,6 +138,31 @@ def elastica_buffer_studies():
     return "elastica.md", "elastica/studies/*/", expected
 
 
+def elastica_penalty_phi10():
+    """Case 3's φ = 10 arm from the contact policy and at 10M steps: each variant's row of
+    penalty_phi10.csv as the page gives it (seeds joined by " / ")."""
+    table = rows("elastica/studies/penalty_phi10.csv")
+    labels = {"contact_policy_under_penalty": "the contact policy, unchanged",
+              "from_contact": "warm-started from it, 2M steps",
+              "from_scratch_10m": "from scratch, 10M steps"}
+    expected = []
+    for variant, label in labels.items():
+        runs = [row for row in table if row["variant"] == variant]
+
+        def joined(column, form):
+            return " / ".join(form(float(row[column])) for row in runs)
+
+        def elements(value):
+            return f"{value:.2g}" if value < 1 else f"{value:.1f}"
+
+        expected.append(
+            f"| {label} | {' / '.join(row['seed'] for row in runs)} | "
+            + minus(f"{joined('penalty_return', lambda v: f'{v:,.0f}')} | "
+                    f"{joined('distance_m', lambda v: f'{v:.3f}')} | "
+                    f"{joined('intersecting_elements', elements)} |"))
+    return "elastica.md", "elastica/studies/penalty_phi10.csv", expected
+
+
 def learned_dynamics_baselines():
     """Tables 4.1-4.2: the predict-no-change row and the velocity split by throttle change."""
     expected = []
@@ -616,7 +641,8 @@ def check_headlines():
 
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines, safety_filter_margin_feature,
           learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
-          beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse, elastica_buffer_studies)
+          beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse, elastica_buffer_studies,
+          elastica_penalty_phi10)
 
 
 def main():
