@@ -224,14 +224,14 @@ void DubinsCar::load_state(SnapshotReader& in) {
 
 EnvDescription DubinsCar::description() {
   return {
-      .observation = {{"position x", "m"},
-                      {"position y", "m"},
-                      {"cos ψ (heading from the x axis)", "1"},
-                      {"sin ψ", "1"},
-                      {"elapsed fraction of the horizon t/T", "1"},
-                      {"with observe_margin: the safety margin d, min(box − |x|, box − |y|, ‖p‖ − "
-                       "obstacle_radius)",
-                       "m"}},
+      .observation =
+          {{"position x", "m"},
+           {"position y", "m"},
+           {"cos ψ (heading from the x axis)", "1"},
+           {"sin ψ", "1"},
+           {"elapsed fraction of the horizon t/T (observe_margin: then the safety margin "
+            "d = min(box − |x|, box − |y|, ‖p‖ − obstacle_radius) in m, one more entry)",
+            "1"}},
       .action = {{"turn rate ω, |ω| ≤ max_turn_rate (speed_control: then the speed v, one more "
                   "entry; discrete_actions ≥ 2: one index)",
                   "rad/s"}},
