@@ -3,13 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
 #include "tendril/core/error.hpp"
 #include "tendril/envs/registry.hpp"
 #include "tendril/rl/algorithm_registry.hpp"
-#include "tendril/rl/dqn/q_greedy_policy.hpp"
+#include "tendril/rl/dqn/dqn.hpp"
 #include "tendril/rl/off_policy_algorithm.hpp"
 #include "tendril/rl/sac/sac.hpp"
 #include "tendril/rl/trainer.hpp"
@@ -23,31 +24,33 @@ std::string key(const Config& config, const std::string& name) {
   return config.source() + ": " + (config.path().empty() ? name : config.path() + "." + name);
 }
 
-// The safety agent of `algorithm` on `env`; only SAC and DQN have a SafetyCritic.
-std::unique_ptr<rl::Algorithm> make_safety_agent(const std::string& algorithm, const Config& algo,
-                                                 envs::VecEnv& env, uint64_t seed,
-                                                 const std::string& where) {
-  require(algorithm == "sac" || algorithm == "dqn",
-          "the safety agent is 'sac' (Box actions) or 'dqn' (Discrete), not '" + algorithm + "'",
-          where);
-  return rl::algorithm_spec(algorithm, where).factory(env, algo, seed);
-}
+// The safety agent of `algorithm` on `env` (only SAC and DQN have a SafetyCritic), built with its
+// type known, beside the two ways to read its critic: as it stands (a copy, for saving) and
+// following its updates (the training filter's; DQN's policy is its network either way).
+struct SafetyAgent {
+  std::unique_ptr<rl::OffPolicyAlgorithm> algorithm;
+  std::function<std::unique_ptr<SafetyCritic>()> critic, live_critic;
+};
 
-std::unique_ptr<SafetyCritic> critic_of(const std::string& algorithm, const rl::Algorithm& agent) {
+SafetyAgent make_safety_agent(const std::string& algorithm, const Config& algo, envs::VecEnv& env,
+                              uint64_t seed, const std::string& where) {
   if (algorithm == "sac") {
-    const auto& sac = dynamic_cast<const rl::Sac&>(agent);
-    return std::make_unique<SacSafetyCritic>(sac.policy(), sac.critics());
+    auto sac = std::make_unique<rl::Sac>(env, rl::SacConfig::from_config(algo), seed);
+    const rl::Sac* agent = sac.get();
+    return {
+        std::move(sac),
+        [agent] { return std::make_unique<SacSafetyCritic>(agent->policy(), agent->critics()); },
+        [agent] { return std::make_unique<SacSafetyCritic>(*agent); }};
   }
-  return std::make_unique<DqnSafetyCritic>(dynamic_cast<const rl::QGreedyPolicy&>(agent.policy()));
-}
-
-// The critic of an agent in training, following its updates (DQN's policy is its network).
-std::unique_ptr<SafetyCritic> live_critic_of(const std::string& algorithm,
-                                             const rl::Algorithm& agent) {
-  if (algorithm == "sac") {
-    return std::make_unique<SacSafetyCritic>(dynamic_cast<const rl::Sac&>(agent));
+  if (algorithm == "dqn") {
+    auto dqn = std::make_unique<rl::Dqn>(env, rl::DqnConfig::from_config(algo), seed);
+    const rl::Dqn* agent = dqn.get();
+    auto critic = [agent] { return std::make_unique<DqnSafetyCritic>(agent->q_policy()); };
+    return {std::move(dqn), critic, critic};
   }
-  return critic_of(algorithm, agent);
+  throw Error(
+      "the safety agent is 'sac' (Box actions) or 'dqn' (Discrete), not '" + algorithm + "'",
+      where);
 }
 
 // The safety agent's scalars of an iteration: its last update ("train/x" as "safety/x"), its
@@ -102,17 +105,17 @@ class SafetyCoTraining : public rl::RunCompanion {
     // The safety agent never steps the environments; it is built on them for their spaces.
     agent_ = make_safety_agent(experiment_.safety_algorithm, experiment_.safety_algo, *env,
                                task.seed + 1, "safety.algorithm");
+    rl::OffPolicyAlgorithm& agent = *agent_.algorithm;
     single_ = envs::make(task.env.id, task.env.params);
     constraint_ = constraint_of(*single_);
-    co_trainer_.emplace(dynamic_cast<rl::OffPolicyAlgorithm&>(*agent_), *constraint_,
-                        SafetyReward(experiment_.safety_gamma), experiment_.co_training,
-                        task.n_timesteps, task.seed + 2);
+    co_trainer_.emplace(agent, *constraint_, SafetyReward(experiment_.safety_gamma),
+                        experiment_.co_training, task.n_timesteps, task.seed + 2);
     if (experiment_.training_filter) {
-      live_critic_ = live_critic_of(experiment_.safety_algorithm, *agent_);
+      live_critic_ = agent_.live_critic();
       auto wrapper = std::make_unique<FilteredVecEnv>(
           std::move(env), *live_critic_,
           [this](const Observation& x) {
-            return agent_->policy().act(x, /*deterministic=*/false, filter_rng_);
+            return agent_.algorithm->policy().act(x, /*deterministic=*/false, filter_rng_);
           },
           experiment_.training_filter_epsilon);
       filtered_ = wrapper.get();
@@ -127,7 +130,7 @@ class SafetyCoTraining : public rl::RunCompanion {
   void add_scalars(rl::TrainStats& stats) override { (*scalars_)(stats); }
 
   void save(ArchiveWriter& writer) const override {
-    const std::string agent = agent_->checkpoint_bytes();
+    const std::string agent = agent_.algorithm->checkpoint_bytes();
     writer.put_bytes("safety/agent", std::as_bytes(std::span<const char>(agent)));
     co_trainer_->save(writer, "safety/co_trainer/");
     writer.put_rng("safety/filter_rng", filter_rng_);
@@ -137,7 +140,7 @@ class SafetyCoTraining : public rl::RunCompanion {
     const Snapshot agent = reader.get_bytes("safety/agent");
     // The agent's own checkpoint verifies and installs as a whole; should a later read fail,
     // the trainer loads an older checkpoint, which installs it again.
-    agent_->load_checkpoint_bytes(
+    agent_.algorithm->load_checkpoint_bytes(
         std::string(reinterpret_cast<const char*>(agent.data()), agent.size()),
         reader.name() + " (safety agent)");
     std::function<void()> install_co_trainer =
@@ -152,12 +155,12 @@ class SafetyCoTraining : public rl::RunCompanion {
   }
 
   void finish(const std::filesystem::path& run_directory) const override {
-    critic_of(experiment_.safety_algorithm, *agent_)->save(run_directory / "safety.critic");
+    agent_.critic()->save(run_directory / "safety.critic");
   }
 
  private:
   const SafetyExperiment& experiment_;
-  std::unique_ptr<rl::Algorithm> agent_;
+  SafetyAgent agent_;
   std::unique_ptr<Env> single_;
   std::unique_ptr<envs::SafetyConstraint> constraint_;
   std::optional<SafetyCoTrainer> co_trainer_;

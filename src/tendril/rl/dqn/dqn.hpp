@@ -22,6 +22,7 @@ class Dqn : public OffPolicyAlgorithm {
 
   const DqnConfig& config() const { return config_; }
   const Policy& policy() const override { return policy_; }
+  const QGreedyPolicy& q_policy() const { return policy_; }  // its Q-network
   double exploration_rate() const { return policy_.exploration_rate(); }
 
  protected:
