@@ -163,6 +163,25 @@ def elastica_penalty_phi10():
     return "elastica.md", "elastica/studies/penalty_phi10.csv", expected
 
 
+def ur5_bonus_ladder():
+    """The success-bonus study: per rung and bonus, the mean over the seed's five seeds and each
+    seed's final training success, from bonus_ladder.csv's run rows."""
+    table = rows("ur5/bonus_ladder.csv")
+    rungs = {"base": "base", "exp_distance": "+ exp distance",
+             "action_penalty": "+ action penalty 0.05"}
+    expected = []
+    for rung, label in rungs.items():
+        for bonus, shown in (("0", "0"), ("10", "+10")):
+            prefix = f"runs/sweeps/ur5_ppo_{rung}_bonus/success_bonus_{bonus}-seed_"
+            by_seed = {int(row["seed"]): float(row["success_final"]) for row in table
+                       if row["run"].startswith(prefix)}
+            values = [by_seed[seed] for seed in (42, 55, 100, 200, 300)]
+            each = " / ".join(f"{value:.2f}" for value in values)
+            expected.append(f"| {'base' if rung == 'base' else label} | {shown} | "
+                            f"**{statistics.mean(values):.2f}** | {each} |")
+    return "ur5.md", "ur5/bonus_ladder.csv", expected
+
+
 def learned_dynamics_baselines():
     """Tables 4.1-4.2: the predict-no-change row and the velocity split by throttle change."""
     expected = []
@@ -642,7 +661,7 @@ def check_headlines():
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines, safety_filter_margin_feature,
           learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
           beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse, elastica_buffer_studies,
-          elastica_penalty_phi10)
+          elastica_penalty_phi10, ur5_bonus_ladder)
 
 
 def main():
