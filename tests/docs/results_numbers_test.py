@@ -182,6 +182,22 @@ def ur5_bonus_ladder():
     return "ur5.md", "ur5/bonus_ladder.csv", expected
 
 
+def sma_limb_rl_budget_capacity():
+    """The LK Encoder at 1M steps and the 2 × 512 No Head runs, from budget_capacity_runs.csv."""
+    runs = {row["run"]: row for row in rows("sma_limb_rl/budget_capacity_runs.csv")}
+    labels = (("lk_encoder_1m_seed0", "LK Encoder, the thesis' budget (seed 0)",
+               "**{:.2f}** (thesis 1.00)"),
+              ("no_head_2x512_seed0", "MLP No Head, 2 × 512 (seed 0)", "{:.2f}"),
+              ("no_head_2x512_seed1", "MLP No Head, 2 × 512 (seed 1)", "{:.2f}"))
+    expected = []
+    for run, label, success in labels:
+        row = runs[run]
+        expected.append(minus(
+            f"| {label} | {int(row['steps']):,} | {success.format(float(row['success_final']))} | "
+            f"{float(row['eval_return_final']):.1f} | {row['wall_s']} s |"))
+    return "sma_limb_rl.md", "sma_limb_rl/budget_capacity_runs.csv", expected
+
+
 def learned_dynamics_baselines():
     """Tables 4.1-4.2: the predict-no-change row and the velocity split by throttle change."""
     expected = []
@@ -563,9 +579,13 @@ def headline_sma_limb_rl():
                                  for actions in ("mean", "sampled")) if v is not None]
               for seed in "012"}
     late = robust["1"] + robust["2"]
+    budget = {row["run"]: row for row in rows("sma_limb_rl/budget_capacity_runs.csv")}
     return [
         (name, "LK Encoder head: success at 1° in the learned model",
          "sma_limb_rl/training_runs.csv", success("lk_encoder")),
+        (name, "LK Encoder head at the thesis' budget (1M steps): success at 1°",
+         "sma_limb_rl/budget_capacity_runs.csv",
+         f"{float(budget['lk_encoder_1m_seed0']['success_final']):.2f} (seed 0)"),
         (name, "MLP No Head: success at 1°", "sma_limb_rl/training_runs.csv", success("no_head")),
         (name, "LK Encoder policy tracking spiral, square and SML: mean RMSE",
          "sma_limb_rl/tracking.csv", f"{min(tracked):.2f}–{max(tracked):.2f}° (3 seeds"),
@@ -661,7 +681,7 @@ def check_headlines():
 CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines, safety_filter_margin_feature,
           learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
           beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse, elastica_buffer_studies,
-          elastica_penalty_phi10, ur5_bonus_ladder)
+          elastica_penalty_phi10, ur5_bonus_ladder, sma_limb_rl_budget_capacity)
 
 
 def main():
