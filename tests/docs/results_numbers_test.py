@@ -134,7 +134,8 @@ def elastica_buffer_studies():
             final = " / ".join(signed(float(run["final_eval_mean"])) for run in seeds)
             mean = signed(float(configuration["final_eval_mean"]))
             std = f"{float(configuration['final_eval_std']):,.0f}"
-            expected.append(f"| {buffer // 1000}k ({paper}) | {train} | {mean} ± {std} | {final} |")
+            expected.append(
+                f"| {buffer // 1000}k ({paper}) | {train} | {mean} ± {std} | {final} |")
     return "elastica.md", "elastica/studies/*/", expected
 
 
@@ -678,10 +679,11 @@ def check_headlines():
     return failures, len(tables), checked
 
 
-CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines, safety_filter_margin_feature,
-          learned_dynamics_baselines, learned_dynamics_twin_damping, pneumatic_open_loop_spread,
-          beam_variants, pneumatic_initial_offset, pneumatic_ppo_collapse, elastica_buffer_studies,
-          elastica_penalty_phi10, ur5_bonus_ladder, sma_limb_rl_budget_capacity)
+CHECKS = (sma_limb_rl_tables, safety_filter_limb, safety_filter_baselines,
+          safety_filter_margin_feature, learned_dynamics_baselines, learned_dynamics_twin_damping,
+          pneumatic_open_loop_spread, beam_variants, pneumatic_initial_offset,
+          pneumatic_ppo_collapse, elastica_buffer_studies, elastica_penalty_phi10, ur5_bonus_ladder,
+          sma_limb_rl_budget_capacity)
 
 
 def main():
