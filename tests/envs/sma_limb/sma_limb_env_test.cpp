@@ -143,6 +143,15 @@ TEST_F(SmaLimbEnvParams, AreReadFromTheConfigAndCheckedAgainstTheCalibration) {
             std::string::npos);
 }
 
+// Forty-one readings of the uncalibrated stiff limb with `extra` parameters, from reset seed 5
+// under a staircase of throttles (+x stepping through 0–6, −y held at 3).
+std::vector<Observation> staircase_readings(const std::string& extra) {
+  auto env = make("SmaLimb/Robot-v0", Config::parse("limb: stiff\ncalibration: none\n" + extra));
+  std::vector<Observation> observations{env->reset(5)};
+  for (int k = 0; k < 40; ++k) observations.push_back(env->step(throttles(k % 7, -3)).observation);
+  return observations;
+}
+
 // damping_rate (1/s) re-damps the twin for a study of its damping; without it the limb is the
 // limb's own, reading for reading (the committed data sets and models depend on that). A limb let
 // go after a push rings: with every rate decaying at 15/s its first bending mode (≈ 5.4 Hz) has
@@ -151,13 +160,7 @@ TEST_F(SmaLimbEnvParams, AreReadFromTheConfigAndCheckedAgainstTheCalibration) {
 // rest falls from 23° to 4° (the test asks for half; what remains at 90/s is mostly the
 // sensor's 0.2° noise).
 TEST(SmaLimbEnvDamping, IsTheLimbsOwnUnlessSet) {
-  const auto readings = [](const std::string& extra) {
-    auto env = make("SmaLimb/Robot-v0", Config::parse("limb: stiff\ncalibration: none\n" + extra));
-    std::vector<Observation> observations{env->reset(5)};
-    for (int k = 0; k < 40; ++k)
-      observations.push_back(env->step(throttles(k % 7, -3)).observation);
-    return observations;
-  };
+  const auto readings = staircase_readings;
   const auto own = readings("");
   EXPECT_EQ(own, readings("damping_rate: 15\n"));
   EXPECT_NE(own, readings("damping_rate: 60\n"));
@@ -220,13 +223,7 @@ TEST(SmaLimbEnvPhaseReentry, IsTheTwinsOwnUnlessSet) {
 // twin with continuous phase re-entry, BDF2 at 2 ms stays within 0.3° of position Verlet over
 // these 40 readings (bench/implicit_accuracy: 0.16° at most over 120 s of exploration).
 TEST(SmaLimbEnvImplicitStep, BoundsTheImplicitTwinsSteps) {
-  const auto readings = [](const std::string& extra) {
-    auto env = make("SmaLimb/Robot-v0", Config::parse("limb: stiff\ncalibration: none\n" + extra));
-    std::vector<Observation> observations{env->reset(5)};
-    for (int k = 0; k < 40; ++k)
-      observations.push_back(env->step(throttles(k % 7, -3)).observation);
-    return observations;
-  };
+  const auto readings = staircase_readings;
   const auto bdf2 = readings("integrator: bdf2\n");
   EXPECT_EQ(bdf2, readings("integrator: bdf2\nimplicit_step: 0.005\n"));
   EXPECT_NE(bdf2, readings("integrator: bdf2\nimplicit_step: 0.002\n"));
