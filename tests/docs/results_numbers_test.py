@@ -121,7 +121,7 @@ def elastica_buffer_studies():
     means, the configuration's final evaluation (mean ± population std) and each seed's, read
     from the committed sweep summaries."""
     expected = []
-    for study in ("tracking3d_ddpg_buffer_size_reduced",):
+    for study in ("tracking3d_ddpg_buffer_size_reduced", "tracking3d_td3_buffer_size_reduced"):
         folder = f"elastica/studies/{study}"
         runs = rows(f"{folder}/runs.csv")
         for configuration in rows(f"{folder}/configurations.csv"):
