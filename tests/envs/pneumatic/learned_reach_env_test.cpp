@@ -48,6 +48,18 @@ Action delta_on(int chamber, float value) {
   return action;
 }
 
+Snapshot snapshot_of(const Env& env) {
+  Snapshot snapshot;
+  SnapshotWriter writer(snapshot);
+  env.save_state(writer);
+  return snapshot;
+}
+
+void restore(Env& env, const Snapshot& snapshot) {
+  SnapshotReader reader(snapshot);
+  env.load_state(reader);
+}
+
 // The learned-model environment steps the same task as PneumaticArm/Reach-v0: fed, through a
 // scripted model, the tips the deterministic twin produced under a sequence of deltas, it gives
 // the same rewards (eq. (2) with the −2 step penalty), terminations, observation
@@ -233,14 +245,11 @@ TEST(LearnedReach, ASnapshotWithAnInitialOffsetRepeatsTheEpisodeAndTheNextStart)
   auto env = make(ReachEnv::kModelId, Config::parse("task: G2\ninitial_offset_mm: 25\n"));
   env->reset(9);
   for (int t = 0; t < 5; ++t) env->step(delta_on(t % 9, 0.2f));
-  Snapshot snapshot;
-  SnapshotWriter writer(snapshot);
-  env->save_state(writer);
+  const Snapshot snapshot = snapshot_of(*env);
   std::vector<Observation> first;
   for (int t = 0; t < 8; ++t) first.push_back(env->step(delta_on((3 * t) % 9, -0.1f)).observation);
   first.push_back(env->reset());
-  SnapshotReader reader(snapshot);
-  env->load_state(reader);
+  restore(*env, snapshot);
   for (int t = 0; t < 8; ++t) {
     EXPECT_EQ(env->step(delta_on((3 * t) % 9, -0.1f)).observation, first[t]) << t;
   }
@@ -267,13 +276,10 @@ TEST(LearnedReach, ASnapshotRepeatsTheEpisodeBitForBit) {
   auto env = make(ReachEnv::kModelId, Config::parse("task: G2"));
   env->reset(3);
   for (int t = 0; t < 7; ++t) env->step(delta_on(t % 9, 0.2f));
-  Snapshot snapshot;
-  SnapshotWriter writer(snapshot);
-  env->save_state(writer);
+  const Snapshot snapshot = snapshot_of(*env);
   std::vector<Step> first;
   for (int t = 0; t < 10; ++t) first.push_back(env->step(delta_on((2 * t) % 9, -0.1f)));
-  SnapshotReader reader(snapshot);
-  env->load_state(reader);
+  restore(*env, snapshot);
   for (int t = 0; t < 10; ++t) {
     const Step step = env->step(delta_on((2 * t) % 9, -0.1f));
     EXPECT_EQ(step.observation, first[t].observation) << t;
